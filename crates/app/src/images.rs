@@ -1,0 +1,73 @@
+//! Lesson images: PNG files embedded with the lessons, decoded once and
+//! kept as textures.
+
+use std::collections::HashMap;
+
+use egui::{ColorImage, TextureHandle, TextureOptions};
+
+use crate::lesson_view::error_box;
+
+/// Decoded images by their path under `lessons/`.
+#[derive(Default)]
+pub struct ImageCache {
+    textures: HashMap<String, Result<TextureHandle, String>>,
+}
+
+impl std::fmt::Debug for ImageCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ImageCache").field("loaded", &self.textures.len()).finish()
+    }
+}
+
+/// Decode PNG bytes into an egui image.
+pub fn decode_png(bytes: &[u8]) -> Result<ColorImage, String> {
+    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16 | png::Transformations::ALPHA);
+    let mut reader = decoder.read_info().map_err(|e| format!("not a readable PNG: {e}"))?;
+    let mut buffer = vec![0; reader.output_buffer_size().ok_or("the PNG is too large")?];
+    let info = reader.next_frame(&mut buffer).map_err(|e| format!("not a readable PNG: {e}"))?;
+    let pixels = &buffer[..info.buffer_size()];
+    let size = [info.width as usize, info.height as usize];
+    match info.color_type {
+        png::ColorType::Rgba => Ok(ColorImage::from_rgba_unmultiplied(size, pixels)),
+        png::ColorType::GrayscaleAlpha => {
+            let rgba: Vec<u8> = pixels.chunks_exact(2).flat_map(|p| [p[0], p[0], p[0], p[1]]).collect();
+            Ok(ColorImage::from_rgba_unmultiplied(size, &rgba))
+        }
+        other => Err(format!("unsupported PNG colour type {other:?}")),
+    }
+}
+
+/// Resolve `url` (relative to the lesson's unit folder) to embedded bytes.
+fn find_bytes(address: &str, url: &str) -> Option<&'static [u8]> {
+    let unit = address.split('/').next().unwrap_or("");
+    kinolab_lessons::bundled::images().iter().find_map(|(path, bytes)| {
+        let (folder, name) = path.split_once('/')?;
+        let folder_slug = folder.split_once('-').map_or(folder, |(_, rest)| rest);
+        (folder_slug == unit && name == url).then_some(*bytes)
+    })
+}
+
+impl ImageCache {
+    /// Show an embedded image, scaled to fit the column, with its alt text
+    /// as the caption and accessible label.
+    pub fn show(&mut self, ui: &mut egui::Ui, address: &str, url: &str, alt: &str) {
+        let key = format!("{address}|{url}");
+        let entry = self.textures.entry(key).or_insert_with(|| {
+            let bytes = find_bytes(address, url).ok_or_else(|| format!("no image `{url}` beside this lesson"))?;
+            let image = decode_png(bytes)?;
+            Ok(ui.ctx().load_texture(url, image, TextureOptions::LINEAR))
+        });
+        match entry {
+            Ok(texture) => {
+                let size = texture.size_vec2();
+                let scale = (ui.available_width() / size.x).min(1.0);
+                ui.vertical_centered(|ui| {
+                    ui.add(egui::Image::new((texture.id(), size * scale)).alt_text(alt));
+                    ui.label(egui::RichText::new(alt).small().weak());
+                });
+            }
+            Err(message) => error_box(ui, "Image cannot be shown", message),
+        }
+    }
+}

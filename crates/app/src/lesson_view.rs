@@ -1,0 +1,267 @@
+//! Draws a parsed lesson: headings, paragraphs with formulas, lists,
+//! tables, code, images, quizzes and live widgets.
+
+use std::collections::HashMap;
+
+use egui::{Color32, RichText, Stroke};
+use kinolab_lessons::{Align, Block, Inline, Span, WidgetSpec, math::Math};
+
+use crate::images::ImageCache;
+use crate::math_view::{MathStyle, display_math, math_widget};
+use crate::progress::Progress;
+use crate::quiz_view::{QuizState, quiz_ui};
+use crate::route::Page;
+use crate::theme;
+use crate::widgets::{self, LabWidget};
+
+/// A live widget, or why it could not be made.
+pub type WidgetSlot = Result<Box<dyn LabWidget>, String>;
+
+/// Everything a lesson needs while it is drawn, beyond its blocks.
+pub struct LessonState<'a> {
+    /// The lesson's `unit/lesson` address; quiz and widget ids hang off it.
+    pub address: &'a str,
+    pub quizzes: &'a mut HashMap<String, QuizState>,
+    pub widgets: &'a mut HashMap<String, WidgetSlot>,
+    pub progress: &'a mut Progress,
+    pub progress_changed: &'a mut bool,
+    pub images: &'a mut ImageCache,
+    /// Set when the learner follows a link to another page.
+    pub navigate: &'a mut Option<Page>,
+}
+
+impl std::fmt::Debug for LessonState<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("LessonState").field("address", &self.address).finish_non_exhaustive()
+    }
+}
+
+/// Draw `blocks`. Quizzes and widgets are numbered in order of appearance,
+/// which gives them stable ids.
+pub fn blocks_ui(ui: &mut egui::Ui, blocks: &[Block], state: &mut LessonState<'_>) {
+    let mut quiz_no = 0;
+    let mut widget_no = 0;
+    for block in blocks {
+        block_ui(ui, block, state, &mut quiz_no, &mut widget_no);
+    }
+}
+
+fn block_ui(
+    ui: &mut egui::Ui,
+    block: &Block,
+    state: &mut LessonState<'_>,
+    quiz_no: &mut usize,
+    widget_no: &mut usize,
+) {
+    match block {
+        Block::Heading { level, text } => {
+            ui.add_space(if *level <= 2 { 14.0 } else { 8.0 });
+            let size = theme::heading_size(*level);
+            inline_ui(ui, text, size, true, state.navigate);
+            ui.add_space(4.0);
+        }
+        Block::Paragraph(spans) => {
+            inline_ui(ui, spans, theme::BODY_SIZE, false, state.navigate);
+            ui.add_space(8.0);
+        }
+        Block::Math(math) => {
+            display_math(ui, math, &math_style(ui, theme::BODY_SIZE * 1.15));
+            ui.add_space(8.0);
+        }
+        Block::List { start, items } => {
+            for (i, item) in items.iter().enumerate() {
+                ui.horizontal_top(|ui| {
+                    let marker = match start {
+                        Some(n) => format!("{}.", n + i as u64),
+                        None => "•".to_owned(),
+                    };
+                    ui.add_sized([22.0, theme::BODY_SIZE + 4.0], egui::Label::new(RichText::new(marker).size(theme::BODY_SIZE)));
+                    ui.vertical(|ui| {
+                        for block in item {
+                            block_ui(ui, block, state, quiz_no, widget_no);
+                        }
+                    });
+                });
+            }
+            ui.add_space(6.0);
+        }
+        Block::Quote(blocks) => {
+            egui::Frame::new()
+                .inner_margin(egui::Margin { left: 12, right: 8, top: 4, bottom: 4 })
+                .stroke(Stroke::NONE)
+                .show(ui, |ui| {
+                    let rect = ui.max_rect();
+                    ui.painter().vline(rect.left() - 8.0, rect.y_range(), Stroke::new(3.0, theme::accent(ui)));
+                    for block in blocks {
+                        block_ui(ui, block, state, quiz_no, widget_no);
+                    }
+                });
+        }
+        Block::Code { text, .. } => {
+            egui::Frame::new()
+                .fill(ui.visuals().code_bg_color)
+                .corner_radius(4.0)
+                .inner_margin(8.0)
+                .show(ui, |ui| {
+                    ui.set_width(ui.available_width());
+                    ui.label(RichText::new(text.trim_end()).monospace().size(theme::CODE_SIZE));
+                });
+            ui.add_space(8.0);
+        }
+        Block::Table { align, header, rows } => {
+            table_ui(ui, align, header, rows, state);
+            ui.add_space(10.0);
+        }
+        Block::Rule => {
+            ui.separator();
+        }
+        Block::Widget(spec) => {
+            let id = format!("{}@w{}", state.address, *widget_no);
+            *widget_no += 1;
+            widget_ui(ui, &id, spec, state.widgets);
+            ui.add_space(10.0);
+        }
+        Block::Quiz(quiz) => {
+            let id = format!("{}#{}", state.address, *quiz_no);
+            *quiz_no += 1;
+            let quiz_state = state.quizzes.entry(id.clone()).or_default();
+            if quiz_ui(ui, &id, quiz, quiz_state, state.navigate) {
+                if let Some(correct) = quiz_state.verdict {
+                    state.progress.record_answer(&id, correct);
+                    *state.progress_changed = true;
+                }
+            }
+            ui.add_space(12.0);
+        }
+    }
+    // Images sit inside paragraphs in Markdown; draw them after the text.
+    if let Block::Paragraph(spans) = block {
+        for span in spans {
+            if let Span::Image { url, alt } = span {
+                state.images.show(ui, state.address, url, alt);
+            }
+        }
+    }
+}
+
+fn math_style(ui: &egui::Ui, size: f32) -> MathStyle {
+    MathStyle {
+        size,
+        color: ui.visuals().text_color(),
+    }
+}
+
+/// Draw one run of inline content, wrapping like a paragraph.
+pub fn inline_ui(ui: &mut egui::Ui, spans: &Inline, size: f32, strong: bool, navigate: &mut Option<Page>) {
+    ui.horizontal_wrapped(|ui| {
+        ui.spacing_mut().item_spacing.x = 0.0;
+        ui.spacing_mut().item_spacing.y = 2.0;
+        for span in spans {
+            match span {
+                Span::Text { text, style } => {
+                    let mut rich = RichText::new(text).size(size);
+                    if strong || style.strong {
+                        rich = rich.strong();
+                    }
+                    if style.emphasis {
+                        rich = rich.italics();
+                    }
+                    if style.strikethrough {
+                        rich = rich.strikethrough();
+                    }
+                    match &style.link {
+                        Some(url) if url.starts_with("#/") => {
+                            if ui.link(rich).clicked() {
+                                *navigate = Some(Page::from_hash(url));
+                            }
+                        }
+                        Some(url) => {
+                            ui.hyperlink_to(rich, url);
+                        }
+                        None => {
+                            ui.label(rich);
+                        }
+                    }
+                }
+                Span::Code(code) => {
+                    ui.label(RichText::new(code).code().size(theme::CODE_SIZE));
+                }
+                Span::Math(math) => {
+                    inline_math(ui, math, size);
+                }
+                Span::Image { .. } => {}
+                Span::LineBreak => ui.end_row(),
+            }
+        }
+    });
+}
+
+fn inline_math(ui: &mut egui::Ui, math: &Math, size: f32) {
+    let style = math_style(ui, size);
+    math_widget(ui, math, &style);
+}
+
+fn table_ui(ui: &mut egui::Ui, align: &[Align], header: &[Inline], rows: &[Vec<Inline>], state: &mut LessonState<'_>) {
+    let id = ui.next_auto_id();
+    egui::Frame::new()
+        .stroke(Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color))
+        .corner_radius(4.0)
+        .inner_margin(6.0)
+        .show(ui, |ui| {
+            egui::Grid::new(id)
+                .striped(true)
+                .spacing([18.0, 6.0])
+                .show(ui, |ui| {
+                    for (col, cell) in header.iter().enumerate() {
+                        cell_ui(ui, cell, align.get(col), true, state);
+                    }
+                    ui.end_row();
+                    for row in rows {
+                        for (col, cell) in row.iter().enumerate() {
+                            cell_ui(ui, cell, align.get(col), false, state);
+                        }
+                        ui.end_row();
+                    }
+                });
+        });
+}
+
+fn cell_ui(ui: &mut egui::Ui, cell: &Inline, align: Option<&Align>, header: bool, state: &mut LessonState<'_>) {
+    let layout = match align {
+        Some(Align::Right) => egui::Layout::right_to_left(egui::Align::Center),
+        Some(Align::Center) => egui::Layout::top_down(egui::Align::Center),
+        _ => egui::Layout::left_to_right(egui::Align::Center),
+    };
+    ui.with_layout(layout, |ui| {
+        ui.set_max_width(320.0);
+        inline_ui(ui, cell, theme::BODY_SIZE - 1.0, header, state.navigate);
+    });
+}
+
+fn widget_ui(ui: &mut egui::Ui, id: &str, spec: &WidgetSpec, slots: &mut HashMap<String, WidgetSlot>) {
+    let slot = slots.entry(id.to_owned()).or_insert_with(|| widgets::create(spec));
+    egui::Frame::group(ui.style())
+        .inner_margin(10.0)
+        .corner_radius(6.0)
+        .show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.push_id(id, |ui| match slot {
+                Ok(widget) => widget.ui(ui),
+                Err(message) => error_box(ui, &format!("Widget `{}` cannot be shown", spec.name), message),
+            });
+        });
+}
+
+/// A visible, readable error in place of content that could not be shown.
+pub fn error_box(ui: &mut egui::Ui, title: &str, message: &str) {
+    egui::Frame::new()
+        .fill(Color32::from_rgba_unmultiplied(200, 40, 40, 40))
+        .stroke(Stroke::new(1.5, Color32::from_rgb(200, 50, 50)))
+        .corner_radius(6.0)
+        .inner_margin(10.0)
+        .show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.label(RichText::new(title).strong().color(Color32::from_rgb(220, 60, 60)));
+            ui.label(message);
+        });
+}

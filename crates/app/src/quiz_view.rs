@@ -1,0 +1,170 @@
+//! A quiz card: the question, the answer controls, a Check button, and the
+//! verdict with its explanation once answered.
+
+use egui::{Color32, RichText, Stroke};
+use kinolab_lessons::{Answer, Inline, Quiz, QuizKind, Span};
+
+use crate::lesson_view::inline_ui;
+use crate::route::Page;
+use crate::theme;
+
+/// What the learner has entered so far, and the last verdict.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct QuizState {
+    pub choice: Option<usize>,
+    pub ticks: Vec<bool>,
+    pub typed: String,
+    /// `Some(true)` right, `Some(false)` wrong, `None` not checked yet.
+    pub verdict: Option<bool>,
+    /// A problem with the input (such as text that is not a number).
+    pub input_error: Option<String>,
+}
+
+/// Parse what was typed into a numeric answer, accepting a decimal comma
+/// and thin separators (`39 916 800`, `0,5`).
+pub fn parse_typed_number(text: &str) -> Option<f64> {
+    let cleaned: String = text
+        .trim()
+        .chars()
+        .filter(|c| !c.is_whitespace() && *c != '_' && *c != '\u{2009}')
+        .map(|c| if c == ',' { '.' } else { c })
+        .collect();
+    cleaned.parse::<f64>().ok().filter(|v| v.is_finite())
+}
+
+fn plain(inline: &Inline) -> Option<String> {
+    let mut out = String::new();
+    for span in inline {
+        match span {
+            Span::Text { text, .. } => out.push_str(text),
+            _ => return None,
+        }
+    }
+    Some(out)
+}
+
+/// Draw the quiz; returns true when the learner pressed Check with a
+/// well-formed answer this frame (the verdict is then in `state`).
+pub fn quiz_ui(ui: &mut egui::Ui, id: &str, quiz: &Quiz, state: &mut QuizState, navigate: &mut Option<Page>) -> bool {
+    let mut checked = false;
+    let accent = theme::accent(ui);
+    egui::Frame::new()
+        .stroke(Stroke::new(1.5, accent.gamma_multiply(0.7)))
+        .fill(accent.gamma_multiply(0.06))
+        .corner_radius(8.0)
+        .inner_margin(12.0)
+        .show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.push_id(id, |ui| {
+                ui.label(RichText::new("Check yourself").small().color(accent));
+                inline_ui(ui, &quiz.question, theme::BODY_SIZE, true, navigate);
+                ui.add_space(4.0);
+                let answer = answer_controls(ui, quiz, state, navigate);
+                ui.add_space(4.0);
+                ui.horizontal(|ui| {
+                    let button = ui.button(RichText::new("Check answer").size(theme::BODY_SIZE));
+                    if button.clicked() {
+                        match answer {
+                            Some(answer) => {
+                                state.input_error = None;
+                                state.verdict = quiz.check(&answer).ok();
+                                checked = state.verdict.is_some();
+                            }
+                            None => {
+                                state.verdict = None;
+                                state.input_error = Some(match quiz.kind {
+                                    QuizKind::Numeric { .. } => "Type a number first, such as 120 or 0.5.".to_owned(),
+                                    _ => "Choose an answer first.".to_owned(),
+                                });
+                            }
+                        }
+                    }
+                    if let Some(error) = &state.input_error {
+                        ui.label(RichText::new(error).color(theme::warn_color(ui)));
+                    }
+                });
+                if let Some(right) = state.verdict {
+                    ui.add_space(6.0);
+                    let (text, color) = if right {
+                        ("Right.", Color32::from_rgb(40, 160, 80))
+                    } else {
+                        ("Not quite. Read why, then try again.", Color32::from_rgb(210, 70, 60))
+                    };
+                    ui.label(RichText::new(text).strong().size(theme::BODY_SIZE).color(color));
+                    inline_ui(ui, &quiz.explain, theme::BODY_SIZE, false, navigate);
+                }
+            });
+        });
+    checked
+}
+
+/// The controls for the quiz's kind; returns the answer entered, if any.
+fn answer_controls(ui: &mut egui::Ui, quiz: &Quiz, state: &mut QuizState, navigate: &mut Option<Page>) -> Option<Answer> {
+    match &quiz.kind {
+        QuizKind::Single { options, .. } => {
+            for (i, option) in options.iter().enumerate() {
+                let selected = state.choice == Some(i);
+                let clicked = ui
+                    .horizontal(|ui| option_control(ui, option, selected, false, navigate))
+                    .inner;
+                if clicked {
+                    state.choice = Some(i);
+                    state.verdict = None;
+                }
+            }
+            state.choice.map(Answer::Single)
+        }
+        QuizKind::Multiple { options, .. } => {
+            state.ticks.resize(options.len(), false);
+            ui.label(RichText::new("Tick every right answer.").small().weak());
+            for (i, option) in options.iter().enumerate() {
+                let ticked = state.ticks[i];
+                let clicked = ui
+                    .horizontal(|ui| option_control(ui, option, ticked, true, navigate))
+                    .inner;
+                if clicked {
+                    state.ticks[i] = !ticked;
+                    state.verdict = None;
+                }
+            }
+            Some(Answer::Multiple(state.ticks.clone()))
+        }
+        QuizKind::Numeric { unit, .. } => {
+            ui.horizontal(|ui| {
+                let label = ui.label(RichText::new("Your answer:").size(theme::BODY_SIZE));
+                let edit = egui::TextEdit::singleline(&mut state.typed)
+                    .hint_text("a number")
+                    .desired_width(140.0);
+                let response = ui.add(edit).labelled_by(label.id);
+                if response.changed() {
+                    state.verdict = None;
+                }
+                if let Some(unit) = unit {
+                    ui.label(unit);
+                }
+            });
+            parse_typed_number(&state.typed).map(Answer::Numeric)
+        }
+    }
+}
+
+/// One option: a radio button or checkbox labelled with the option's text
+/// (formulas drawn beside an unlabelled control). Returns true if clicked.
+fn option_control(ui: &mut egui::Ui, option: &Inline, on: bool, checkbox: bool, navigate: &mut Option<Page>) -> bool {
+    let text = plain(option);
+    let label = RichText::new(text.clone().unwrap_or_default()).size(theme::BODY_SIZE);
+    let response = if checkbox {
+        let mut value = on;
+        ui.checkbox(&mut value, label)
+    } else {
+        ui.radio(on, label)
+    };
+    if text.is_none() {
+        // The control has no text of its own: name it for screen readers.
+        let role = if checkbox { egui::Role::CheckBox } else { egui::Role::RadioButton };
+        let name = kinolab_lessons::plain_text(option);
+        response.widget_info(|| egui::WidgetInfo::selected(role, true, on, name.clone()));
+        inline_ui(ui, option, theme::BODY_SIZE, false, navigate);
+    }
+    response.clicked()
+}

@@ -1,0 +1,96 @@
+//! The browser side: the URL hash, the page title, browser storage, and
+//! the signals the end-to-end test and the page shell read.
+
+use std::cell::RefCell;
+
+use crate::app::KinolabApp;
+use crate::progress::STORAGE_KEY;
+use crate::route::Page;
+
+thread_local! {
+    /// The hash the app last acted on.
+    static LAST_HASH: RefCell<Option<String>> = const { RefCell::new(None) };
+    /// What the DOM signals last said, so they are written only on change.
+    static LAST_SIGNAL: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+fn window() -> Option<web_sys::Window> {
+    web_sys::window()
+}
+
+/// The browser's current hash, read fresh (not eframe's copy, which lags
+/// one event behind our own changes).
+pub fn current_hash() -> String {
+    window().and_then(|w| w.location().hash().ok()).unwrap_or_default()
+}
+
+/// Follow the back and forward buttons and edited URLs.
+pub fn before_frame(app: &mut KinolabApp, _frame: &eframe::Frame) {
+    let hash = current_hash();
+    let changed = LAST_HASH.with_borrow(|last| last.as_deref() != Some(hash.as_str()));
+    if changed {
+        if LAST_HASH.with_borrow(|last| last.is_some()) || Page::from_hash(&hash) != *app.page() {
+            app.follow_hash(&hash);
+        }
+        LAST_HASH.set(Some(hash));
+    }
+}
+
+/// Push the app's navigation to the URL, store progress, update signals.
+pub fn after_frame(app: &mut KinolabApp) {
+    if let Some(hash) = app.take_pending_hash() {
+        if let Some(w) = window() {
+            if current_hash() != hash {
+                let _ = w.location().set_hash(&hash);
+            }
+        }
+        LAST_HASH.set(Some(current_hash()));
+    }
+    if let Some(json) = app.take_dirty_progress() {
+        store_progress(&json);
+    }
+    let page = match app.page() {
+        Page::Home => String::new(),
+        Page::Lesson(address) => address.clone(),
+    };
+    let signal = format!("{page}|{}", app.title());
+    if LAST_SIGNAL.with_borrow(|last| *last != signal) {
+        if let Some(document) = window().and_then(|w| w.document()) {
+            document.set_title(&app.title());
+            if let Some(root) = document.document_element() {
+                let _ = root.set_attribute("data-kinolab-page", &page);
+                let _ = root.set_attribute("data-kinolab-ready", "1");
+            }
+        }
+        LAST_SIGNAL.set(signal);
+    }
+}
+
+fn storage() -> Option<web_sys::Storage> {
+    window().and_then(|w| w.local_storage().ok().flatten())
+}
+
+/// The stored progress text, if any.
+pub fn load_progress() -> Option<String> {
+    storage().and_then(|s| s.get_item(STORAGE_KEY).ok().flatten())
+}
+
+fn store_progress(json: &str) {
+    if let Some(s) = storage() {
+        let _ = s.set_item(STORAGE_KEY, json);
+    }
+}
+
+/// Show a readable message over the canvas (start failures and panics).
+pub fn show_fatal(message: &str) {
+    let Some(document) = window().and_then(|w| w.document()) else {
+        return;
+    };
+    if let Some(element) = document.get_element_by_id("kinolab-error") {
+        element.set_text_content(Some(message));
+        let _ = element.set_attribute("style", "display:block");
+    }
+    if let Some(loading) = document.get_element_by_id("kinolab-loading") {
+        loading.remove();
+    }
+}

@@ -1,0 +1,143 @@
+//! The lab driven the way a learner drives it: by labels, clicks and typing.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use kinolab_app::KinolabApp;
+use kinolab_app::route::Page;
+
+fn harness(app: KinolabApp) -> Harness<'static, KinolabApp> {
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1280.0, 16000.0))
+        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    harness.run();
+    harness
+}
+
+const LESSON: &str = "automation/open-and-closed-worlds";
+
+#[test]
+fn opening_a_lesson_by_its_label_shows_it_and_records_the_visit() {
+    let mut h = harness(KinolabApp::new(None, ""));
+    assert_eq!(h.state().page(), &Page::Home);
+    h.get_all_by_label("○ Open and closed worlds").next().unwrap().click();
+    h.run();
+    assert_eq!(h.state().page(), &Page::Lesson(LESSON.into()));
+    assert!(h.state().progress().visited.contains(LESSON));
+    assert_eq!(h.state_mut().take_pending_hash().as_deref(), Some("#/automation/open-and-closed-worlds"));
+    h.get_by_label("After this lesson you can");
+}
+
+#[test]
+fn a_right_answer_is_praised_and_explained() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell").click();
+    h.run();
+    h.get_all_by_label("Check answer").next().unwrap().click();
+    h.run();
+    h.get_by_label("Right.");
+    h.get_by_label_contains("Inside the fenced cell the conveyor");
+    let record = h.state().progress().quizzes[&format!("{LESSON}#0")];
+    assert!(record.correct);
+    assert_eq!(record.attempts, 1);
+}
+
+#[test]
+fn a_wrong_answer_is_flagged_then_can_be_corrected() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    h.get_by_label("A lawn-mowing robot in a family garden").click();
+    h.run();
+    h.get_all_by_label("Check answer").next().unwrap().click();
+    h.run();
+    h.get_by_label("Not quite. Read why, then try again.");
+    h.get_by_label_contains("Inside the fenced cell the conveyor");
+    assert!(!h.state().progress().quizzes[&format!("{LESSON}#0")].correct);
+    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell").click();
+    h.run();
+    assert!(h.query_by_label("Not quite. Read why, then try again.").is_none(), "changing the answer clears the verdict");
+    h.get_all_by_label("Check answer").next().unwrap().click();
+    h.run();
+    h.get_by_label("Right.");
+    assert_eq!(h.state().progress().quizzes[&format!("{LESSON}#0")].attempts, 2);
+}
+
+#[test]
+fn a_numeric_answer_is_checked_within_its_tolerance() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    // The third quiz of the lesson asks for a percentage (answer 50 ± 0.5).
+    let input = h.get_all_by_label("Your answer:").next().unwrap();
+    input.focus();
+    input.type_text("40");
+    h.run();
+    h.get_all_by_label("Check answer").nth(2).unwrap().click();
+    h.run();
+    assert!(!h.state().progress().quizzes[&format!("{LESSON}#2")].correct);
+    h.get_by_label("Not quite. Read why, then try again.");
+    let input = h.get_all_by_label("Your answer:").next().unwrap();
+    input.focus();
+    h.key_press(egui::Key::Backspace);
+    h.key_press(egui::Key::Backspace);
+    h.run();
+    let input = h.get_all_by_label("Your answer:").next().unwrap();
+    input.type_text("50,2");
+    h.run();
+    h.get_all_by_label("Check answer").nth(2).unwrap().click();
+    h.run();
+    assert!(h.state().progress().quizzes[&format!("{LESSON}#2")].correct);
+}
+
+#[test]
+fn checking_without_an_answer_asks_for_one() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    h.get_all_by_label("Check answer").next().unwrap().click();
+    h.run();
+    h.get_by_label("Choose an answer first.");
+    assert!(h.state().progress().quizzes.is_empty());
+}
+
+#[test]
+fn next_and_previous_walk_the_course() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    h.get_by_label_contains("Next: ").click();
+    h.run();
+    assert_eq!(h.state().page(), &Page::Lesson("automation/ways-to-move".into()));
+    h.get_by_label_contains("← Previous: ").click();
+    h.run();
+    assert_eq!(h.state().page(), &Page::Lesson(LESSON.into()));
+}
+
+#[test]
+fn corrupted_progress_resets_with_a_visible_notice() {
+    let h = harness(KinolabApp::new(Some("{\"version\": 1, \"visited\": oops"), ""));
+    h.get_by_label_contains("Your saved progress could not be read");
+    assert!(h.state().progress().visited.is_empty());
+}
+
+#[test]
+fn an_unknown_lesson_address_says_so() {
+    let h = harness(KinolabApp::new(None, "#/automation/no-such-lesson"));
+    h.get_by_label("Lesson not found");
+}
+
+#[test]
+fn every_lesson_renders_without_widget_errors() {
+    let app = KinolabApp::new(None, "");
+    let addresses = app.course().unwrap().addresses();
+    let mut h = harness(app);
+    for address in addresses {
+        h.state_mut().follow_hash(&format!("#/{address}"));
+        h.run();
+        assert!(h.query_by_label_contains("cannot be shown").is_none(), "{address} shows an error box");
+        assert!(h.query_by_label_contains("Lesson not found").is_none());
+    }
+}
+
+#[test]
+fn the_theme_toggle_switches_and_is_remembered() {
+    let mut h = harness(KinolabApp::new(None, ""));
+    let dark_before = h.ctx.theme() == egui::Theme::Dark;
+    let label = if dark_before { "Light theme" } else { "Dark theme" };
+    h.get_by_label(label).click();
+    h.run();
+    assert_eq!(h.state().progress().dark, Some(!dark_before));
+    assert_eq!((h.ctx.theme() == egui::Theme::Dark), !dark_before);
+}

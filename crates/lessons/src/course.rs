@@ -1,0 +1,126 @@
+//! Units and lessons put together into a course, with their addresses.
+
+use crate::document::Block;
+use crate::error::LessonError;
+use crate::front_matter::FrontMatter;
+use crate::parse::{parse_lesson, parse_unit};
+
+/// One lesson, ready to render.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lesson {
+    /// Address part, e.g. `open-and-closed-worlds`.
+    pub slug: String,
+    pub meta: FrontMatter,
+    pub blocks: Vec<Block>,
+}
+
+/// A unit: a titled, ordered group of lessons.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unit {
+    /// Address part, e.g. `automation`.
+    pub slug: String,
+    pub title: String,
+    pub summary: Vec<Block>,
+    pub lessons: Vec<Lesson>,
+}
+
+/// Every unit, in order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Course {
+    pub units: Vec<Unit>,
+}
+
+/// `02-ways-to-move.md` → `ways-to-move`: drop the ordering number and the
+/// extension.
+fn slug_of(name: &str) -> String {
+    let stem = name.strip_suffix(".md").unwrap_or(name);
+    match stem.split_once('-') {
+        Some((number, rest)) if !number.is_empty() && number.bytes().all(|b| b.is_ascii_digit()) => {
+            rest.to_owned()
+        }
+        _ => stem.to_owned(),
+    }
+}
+
+impl Course {
+    /// Build a course from `(path, text)` pairs, paths relative to the
+    /// lessons folder (`01-automation/02-ways-to-move.md`). Files are ordered
+    /// by path; each unit folder needs a `unit.md`. Files outside a unit
+    /// folder (such as the authors' README) are ignored.
+    pub fn from_files<'a>(
+        files: impl IntoIterator<Item = (&'a str, &'a str)>,
+    ) -> Result<Course, LessonError> {
+        let mut files: Vec<(&str, &str)> = files
+            .into_iter()
+            .filter(|(path, _)| path.ends_with(".md") && path.contains('/'))
+            .collect();
+        files.sort_by(|a, b| a.0.cmp(b.0));
+        let mut course = Course::default();
+        for (path, text) in files {
+            let Some((folder, name)) = path.split_once('/') else {
+                continue;
+            };
+            if name.contains('/') {
+                return Err(LessonError::new(path, 1, "lessons sit directly in a unit folder, not deeper"));
+            }
+            let unit_slug = slug_of(folder);
+            let unit = match course.units.iter_mut().position(|u| u.slug == unit_slug) {
+                Some(i) => &mut course.units[i],
+                None => {
+                    course.units.push(Unit {
+                        slug: unit_slug,
+                        title: String::new(),
+                        summary: Vec::new(),
+                        lessons: Vec::new(),
+                    });
+                    let last = course.units.len() - 1;
+                    &mut course.units[last]
+                }
+            };
+            if name == "unit.md" {
+                let (title, summary) = parse_unit(path, text)?;
+                unit.title = title;
+                unit.summary = summary;
+            } else {
+                let (meta, blocks) = parse_lesson(path, text)?;
+                let slug = slug_of(name);
+                if unit.lessons.iter().any(|l| l.slug == slug) {
+                    return Err(LessonError::new(path, 1, format!("two lessons in this unit share the address `{slug}`")));
+                }
+                unit.lessons.push(Lesson { slug, meta, blocks });
+            }
+        }
+        if let Some(unit) = course.units.iter().find(|u| u.title.is_empty()) {
+            return Err(LessonError::new(&unit.slug, 1, "this unit folder has no unit.md with a title"));
+        }
+        Ok(course)
+    }
+
+    /// Find a lesson by its address `unit/lesson`.
+    pub fn lesson(&self, address: &str) -> Option<(&Unit, &Lesson)> {
+        let (unit_slug, lesson_slug) = address.trim_matches('/').split_once('/')?;
+        let unit = self.units.iter().find(|u| u.slug == unit_slug)?;
+        let lesson = unit.lessons.iter().find(|l| l.slug == lesson_slug)?;
+        Some((unit, lesson))
+    }
+
+    /// Every lesson's address, in course order.
+    pub fn addresses(&self) -> Vec<String> {
+        self.units
+            .iter()
+            .flat_map(|u| u.lessons.iter().map(move |l| format!("{}/{}", u.slug, l.slug)))
+            .collect()
+    }
+
+    /// The addresses before and after `address` in course order.
+    pub fn neighbours(&self, address: &str) -> (Option<String>, Option<String>) {
+        let all = self.addresses();
+        match all.iter().position(|a| a == address) {
+            Some(i) => (
+                i.checked_sub(1).and_then(|p| all.get(p).cloned()),
+                all.get(i + 1).cloned(),
+            ),
+            None => (None, None),
+        }
+    }
+}
