@@ -39,12 +39,21 @@ fn main() {
             Some("png") => &mut images,
             _ => continue,
         };
-        let include = if target.starts_with("pub static MARKDOWN") { "include_str" } else { "include_bytes" };
-        let _ = writeln!(target, "    ({relative:?}, {include}!({:?})),", absolute.display().to_string());
+        let include = if target.starts_with("pub static MARKDOWN") {
+            "include_str"
+        } else {
+            "include_bytes"
+        };
+        let _ = writeln!(
+            target,
+            "    ({relative:?}, {include}!({:?})),",
+            absolute.display().to_string()
+        );
     }
     markdown.push_str("];\n");
     images.push_str("];\n");
-    let out = PathBuf::from(std::env::var("OUT_DIR").unwrap_or_default()).join("bundled_lessons.rs");
+    let out =
+        PathBuf::from(std::env::var("OUT_DIR").unwrap_or_default()).join("bundled_lessons.rs");
     if let Err(e) = std::fs::write(&out, markdown + &images) {
         panic!("cannot write {}: {e}", out.display());
     }

@@ -35,11 +35,15 @@ pub struct KinolabApp {
     scroll_to_top: bool,
     /// Fonts and text styles are installed on the first frame.
     style_ready: bool,
+    /// Frames that drew the lab's content.
+    frames_drawn: u64,
 }
 
 impl std::fmt::Debug for KinolabApp {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("KinolabApp").field("page", &self.page).finish_non_exhaustive()
+        f.debug_struct("KinolabApp")
+            .field("page", &self.page)
+            .finish_non_exhaustive()
     }
 }
 
@@ -61,6 +65,7 @@ impl KinolabApp {
             pending_hash: None,
             scroll_to_top: false,
             style_ready: false,
+            frames_drawn: 0,
         };
         app.follow_hash(hash);
         app
@@ -100,10 +105,10 @@ impl KinolabApp {
     }
 
     fn open(&mut self, page: Page) {
-        if let Page::Lesson(address) = &page {
-            if self.progress.visited.insert(address.clone()) {
-                self.progress_dirty = true;
-            }
+        if let Page::Lesson(address) = &page
+            && self.progress.visited.insert(address.clone())
+        {
+            self.progress_dirty = true;
         }
         self.page = page;
         self.scroll_to_top = true;
@@ -166,6 +171,12 @@ impl KinolabApp {
                 .show(ui, |ui| self.sidebar(ui));
         }
         egui::CentralPanel::default().show(ui, |ui| self.main_area(ui));
+        self.frames_drawn = self.frames_drawn.saturating_add(1);
+    }
+
+    /// How many frames have drawn content (0 while fonts are being set up).
+    pub fn frames_drawn(&self) -> u64 {
+        self.frames_drawn
     }
 
     fn top_bar(&mut self, ui: &mut egui::Ui, sidebar_open: bool) {
@@ -177,22 +188,35 @@ impl KinolabApp {
                 if toggle.clicked() {
                     self.sidebar_open = Some(!sidebar_open);
                 }
-                if ui.link(RichText::new("Kinolab").strong().size(18.0)).clicked() {
+                if ui
+                    .link(RichText::new("Kinolab").strong().size(18.0))
+                    .clicked()
+                {
                     self.navigate(Page::Home);
                 }
                 ui.label(RichText::new("robotics, live").weak());
                 ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                     let dark = ui.visuals().dark_mode;
-                    let (icon, label) = if dark { ("Light theme", "Switch to the light theme") } else { ("Dark theme", "Switch to the dark theme") };
+                    let (icon, label) = if dark {
+                        ("Light theme", "Switch to the light theme")
+                    } else {
+                        ("Dark theme", "Switch to the dark theme")
+                    };
                     if ui.button(icon).on_hover_text(label).clicked() {
                         self.progress.dark = Some(!dark);
                         self.progress_dirty = true;
                         self.apply_theme(ui.ctx());
                     }
-                    if let Some(course) = self.course.as_ref().ok() {
+                    if let Ok(course) = &self.course {
                         let total = course.addresses().len();
-                        let visited = course.addresses().iter().filter(|a| self.progress.visited.contains(*a)).count();
-                        ui.label(RichText::new(format!("{visited} of {total} lessons opened")).weak());
+                        let visited = course
+                            .addresses()
+                            .iter()
+                            .filter(|a| self.progress.visited.contains(*a))
+                            .count();
+                        ui.label(
+                            RichText::new(format!("{visited} of {total} lessons opened")).weak(),
+                        );
                     }
                 });
             });
@@ -203,7 +227,10 @@ impl KinolabApp {
         let mut target = None;
         ScrollArea::vertical().show(ui, |ui| {
             ui.add_space(6.0);
-            if ui.selectable_label(self.page == Page::Home, "Start here").clicked() {
+            if ui
+                .selectable_label(self.page == Page::Home, "Start here")
+                .clicked()
+            {
                 target = Some(Page::Home);
             }
             let Ok(course) = &self.course else {
@@ -265,7 +292,11 @@ impl KinolabApp {
     }
 
     fn home(&mut self, ui: &mut egui::Ui) {
-        ui.label(RichText::new("Welcome to Kinolab").size(theme::heading_size(1)).strong());
+        ui.label(
+            RichText::new("Welcome to Kinolab")
+                .size(theme::heading_size(1))
+                .strong(),
+        );
         ui.label(RichText::new(
             "A robotics lab that runs in your browser. Each lesson is short, explains one idea per section, and lets you play with live widgets computed by the same tested code that the command-line tool uses. Your progress stays in this browser.",
         ).size(theme::BODY_SIZE));
@@ -293,7 +324,11 @@ impl KinolabApp {
             }
         };
         let Some((unit, lesson)) = course.lesson(address) else {
-            error_box(ui, "Lesson not found", &format!("There is no lesson at `{address}`. Pick one from the list."));
+            error_box(
+                ui,
+                "Lesson not found",
+                &format!("There is no lesson at `{address}`. Pick one from the list."),
+            );
             return;
         };
         let mut navigate = None;
@@ -314,14 +349,20 @@ impl KinolabApp {
         let (previous, next) = course.neighbours(address);
         ui.horizontal(|ui| {
             if let Some(prev) = previous {
-                let title = course.lesson(&prev).map(|(_, l)| l.meta.title.clone()).unwrap_or_default();
+                let title = course
+                    .lesson(&prev)
+                    .map(|(_, l)| l.meta.title.clone())
+                    .unwrap_or_default();
                 if ui.button(format!("← Previous: {title}")).clicked() {
                     navigate = Some(Page::Lesson(prev));
                 }
             }
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if let Some(next) = next {
-                    let title = course.lesson(&next).map(|(_, l)| l.meta.title.clone()).unwrap_or_default();
+                    let title = course
+                        .lesson(&next)
+                        .map(|(_, l)| l.meta.title.clone())
+                        .unwrap_or_default();
                     if ui.button(format!("Next: {title} →")).clicked() {
                         navigate = Some(Page::Lesson(next));
                     }
@@ -335,34 +376,61 @@ impl KinolabApp {
     }
 }
 
-fn unit_card(ui: &mut egui::Ui, n: usize, unit: &Unit, progress: &Progress, target: &mut Option<Page>) {
-    egui::Frame::group(ui.style()).inner_margin(12.0).corner_radius(8.0).show(ui, |ui| {
-        ui.set_width(ui.available_width());
-        ui.label(RichText::new(format!("Unit {}: {}", n + 1, unit.title)).size(theme::heading_size(2)).strong());
-        let mut ignore = None;
-        for block in &unit.summary {
-            if let kinolab_lessons::Block::Paragraph(spans) = block {
-                inline_ui(ui, spans, theme::BODY_SIZE, false, &mut ignore);
-            }
-        }
-        ui.add_space(4.0);
-        for lesson in &unit.lessons {
-            let address = format!("{}/{}", unit.slug, lesson.slug);
-            let mark = if progress.visited.contains(&address) { "●" } else { "○" };
-            ui.horizontal(|ui| {
-                if ui.link(RichText::new(format!("{mark} {}", lesson.meta.title)).size(theme::BODY_SIZE)).clicked() {
-                    *target = Some(Page::Lesson(address.clone()));
+fn unit_card(
+    ui: &mut egui::Ui,
+    n: usize,
+    unit: &Unit,
+    progress: &Progress,
+    target: &mut Option<Page>,
+) {
+    egui::Frame::group(ui.style())
+        .inner_margin(12.0)
+        .corner_radius(8.0)
+        .show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.label(
+                RichText::new(format!("Unit {}: {}", n + 1, unit.title))
+                    .size(theme::heading_size(2))
+                    .strong(),
+            );
+            let mut ignore = None;
+            for block in &unit.summary {
+                if let kinolab_lessons::Block::Paragraph(spans) = block {
+                    inline_ui(ui, spans, theme::BODY_SIZE, false, &mut ignore);
                 }
-                ui.label(RichText::new(format!("{} min", lesson.meta.minutes)).weak());
-            });
-        }
-    });
+            }
+            ui.add_space(4.0);
+            for lesson in &unit.lessons {
+                let address = format!("{}/{}", unit.slug, lesson.slug);
+                let mark = if progress.visited.contains(&address) {
+                    "●"
+                } else {
+                    "○"
+                };
+                ui.horizontal(|ui| {
+                    if ui
+                        .link(
+                            RichText::new(format!("{mark} {}", lesson.meta.title))
+                                .size(theme::BODY_SIZE),
+                        )
+                        .clicked()
+                    {
+                        *target = Some(Page::Lesson(address.clone()));
+                    }
+                    ui.label(RichText::new(format!("{} min", lesson.meta.minutes)).weak());
+                });
+            }
+        });
     ui.add_space(10.0);
 }
 
 fn lesson_header(ui: &mut egui::Ui, unit: &Unit, lesson: &Lesson) {
     ui.label(RichText::new(&unit.title).weak());
-    ui.label(RichText::new(&lesson.meta.title).size(theme::heading_size(1)).strong());
+    ui.label(
+        RichText::new(&lesson.meta.title)
+            .size(theme::heading_size(1))
+            .strong(),
+    );
     ui.label(RichText::new(format!("About {} minutes", lesson.meta.minutes)).weak());
     ui.add_space(6.0);
     egui::Frame::new()

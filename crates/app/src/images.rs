@@ -15,23 +15,34 @@ pub struct ImageCache {
 
 impl std::fmt::Debug for ImageCache {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("ImageCache").field("loaded", &self.textures.len()).finish()
+        f.debug_struct("ImageCache")
+            .field("loaded", &self.textures.len())
+            .finish()
     }
 }
 
 /// Decode PNG bytes into an egui image.
 pub fn decode_png(bytes: &[u8]) -> Result<ColorImage, String> {
     let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
-    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16 | png::Transformations::ALPHA);
-    let mut reader = decoder.read_info().map_err(|e| format!("not a readable PNG: {e}"))?;
+    decoder.set_transformations(
+        png::Transformations::EXPAND | png::Transformations::STRIP_16 | png::Transformations::ALPHA,
+    );
+    let mut reader = decoder
+        .read_info()
+        .map_err(|e| format!("not a readable PNG: {e}"))?;
     let mut buffer = vec![0; reader.output_buffer_size().ok_or("the PNG is too large")?];
-    let info = reader.next_frame(&mut buffer).map_err(|e| format!("not a readable PNG: {e}"))?;
+    let info = reader
+        .next_frame(&mut buffer)
+        .map_err(|e| format!("not a readable PNG: {e}"))?;
     let pixels = &buffer[..info.buffer_size()];
     let size = [info.width as usize, info.height as usize];
     match info.color_type {
         png::ColorType::Rgba => Ok(ColorImage::from_rgba_unmultiplied(size, pixels)),
         png::ColorType::GrayscaleAlpha => {
-            let rgba: Vec<u8> = pixels.chunks_exact(2).flat_map(|p| [p[0], p[0], p[0], p[1]]).collect();
+            let rgba: Vec<u8> = pixels
+                .chunks_exact(2)
+                .flat_map(|p| [p[0], p[0], p[0], p[1]])
+                .collect();
             Ok(ColorImage::from_rgba_unmultiplied(size, &rgba))
         }
         other => Err(format!("unsupported PNG colour type {other:?}")),
@@ -41,11 +52,13 @@ pub fn decode_png(bytes: &[u8]) -> Result<ColorImage, String> {
 /// Resolve `url` (relative to the lesson's unit folder) to embedded bytes.
 fn find_bytes(address: &str, url: &str) -> Option<&'static [u8]> {
     let unit = address.split('/').next().unwrap_or("");
-    kinolab_lessons::bundled::images().iter().find_map(|(path, bytes)| {
-        let (folder, name) = path.split_once('/')?;
-        let folder_slug = folder.split_once('-').map_or(folder, |(_, rest)| rest);
-        (folder_slug == unit && name == url).then_some(*bytes)
-    })
+    kinolab_lessons::bundled::images()
+        .iter()
+        .find_map(|(path, bytes)| {
+            let (folder, name) = path.split_once('/')?;
+            let folder_slug = folder.split_once('-').map_or(folder, |(_, rest)| rest);
+            (folder_slug == unit && name == url).then_some(*bytes)
+        })
 }
 
 impl ImageCache {
@@ -54,7 +67,8 @@ impl ImageCache {
     pub fn show(&mut self, ui: &mut egui::Ui, address: &str, url: &str, alt: &str) {
         let key = format!("{address}|{url}");
         let entry = self.textures.entry(key).or_insert_with(|| {
-            let bytes = find_bytes(address, url).ok_or_else(|| format!("no image `{url}` beside this lesson"))?;
+            let bytes = find_bytes(address, url)
+                .ok_or_else(|| format!("no image `{url}` beside this lesson"))?;
             let image = decode_png(bytes)?;
             Ok(ui.ctx().load_texture(url, image, TextureOptions::LINEAR))
         });

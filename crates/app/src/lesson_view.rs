@@ -32,7 +32,9 @@ pub struct LessonState<'a> {
 
 impl std::fmt::Debug for LessonState<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("LessonState").field("address", &self.address).finish_non_exhaustive()
+        f.debug_struct("LessonState")
+            .field("address", &self.address)
+            .finish_non_exhaustive()
     }
 }
 
@@ -65,7 +67,7 @@ fn block_ui(
             ui.add_space(8.0);
         }
         Block::Math(math) => {
-            display_math(ui, math, &math_style(ui, theme::BODY_SIZE * 1.15));
+            display_math(ui, math, &math_style(ui, theme::BODY_SIZE));
             ui.add_space(8.0);
         }
         Block::List { start, items } => {
@@ -75,7 +77,10 @@ fn block_ui(
                         Some(n) => format!("{}.", n + i as u64),
                         None => "•".to_owned(),
                     };
-                    ui.add_sized([22.0, theme::BODY_SIZE + 4.0], egui::Label::new(RichText::new(marker).size(theme::BODY_SIZE)));
+                    ui.add_sized(
+                        [22.0, theme::BODY_SIZE + 4.0],
+                        egui::Label::new(RichText::new(marker).size(theme::BODY_SIZE)),
+                    );
                     ui.vertical(|ui| {
                         for block in item {
                             block_ui(ui, block, state, quiz_no, widget_no);
@@ -87,14 +92,22 @@ fn block_ui(
         }
         Block::Quote(blocks) => {
             egui::Frame::new()
-                .inner_margin(egui::Margin { left: 12, right: 8, top: 4, bottom: 4 })
+                .inner_margin(egui::Margin {
+                    left: 12,
+                    right: 8,
+                    top: 4,
+                    bottom: 4,
+                })
                 .stroke(Stroke::NONE)
                 .show(ui, |ui| {
-                    let rect = ui.max_rect();
-                    ui.painter().vline(rect.left() - 8.0, rect.y_range(), Stroke::new(3.0, theme::accent(ui)));
+                    let top = ui.cursor().top();
                     for block in blocks {
                         block_ui(ui, block, state, quiz_no, widget_no);
                     }
+                    let x = ui.min_rect().left() - 8.0;
+                    let y = egui::Rangef::new(top, ui.min_rect().bottom());
+                    ui.painter()
+                        .vline(x, y, Stroke::new(3.0, theme::accent(ui)));
                 });
         }
         Block::Code { text, .. } => {
@@ -104,11 +117,19 @@ fn block_ui(
                 .inner_margin(8.0)
                 .show(ui, |ui| {
                     ui.set_width(ui.available_width());
-                    ui.label(RichText::new(text.trim_end()).monospace().size(theme::CODE_SIZE));
+                    ui.label(
+                        RichText::new(text.trim_end())
+                            .monospace()
+                            .size(theme::CODE_SIZE),
+                    );
                 });
             ui.add_space(8.0);
         }
-        Block::Table { align, header, rows } => {
+        Block::Table {
+            align,
+            header,
+            rows,
+        } => {
             table_ui(ui, align, header, rows, state);
             ui.add_space(10.0);
         }
@@ -125,11 +146,11 @@ fn block_ui(
             let id = format!("{}#{}", state.address, *quiz_no);
             *quiz_no += 1;
             let quiz_state = state.quizzes.entry(id.clone()).or_default();
-            if quiz_ui(ui, &id, quiz, quiz_state, state.navigate) {
-                if let Some(correct) = quiz_state.verdict {
-                    state.progress.record_answer(&id, correct);
-                    *state.progress_changed = true;
-                }
+            if quiz_ui(ui, &id, quiz, quiz_state, state.navigate)
+                && let Some(correct) = quiz_state.verdict
+            {
+                state.progress.record_answer(&id, correct);
+                *state.progress_changed = true;
             }
             ui.add_space(12.0);
         }
@@ -152,7 +173,13 @@ fn math_style(ui: &egui::Ui, size: f32) -> MathStyle {
 }
 
 /// Draw one run of inline content, wrapping like a paragraph.
-pub fn inline_ui(ui: &mut egui::Ui, spans: &Inline, size: f32, strong: bool, navigate: &mut Option<Page>) {
+pub fn inline_ui(
+    ui: &mut egui::Ui,
+    spans: &Inline,
+    size: f32,
+    strong: bool,
+    navigate: &mut Option<Page>,
+) {
     ui.horizontal_wrapped(|ui| {
         ui.spacing_mut().item_spacing.x = 0.0;
         ui.spacing_mut().item_spacing.y = 2.0;
@@ -201,10 +228,22 @@ fn inline_math(ui: &mut egui::Ui, math: &Math, size: f32) {
     math_widget(ui, math, &style);
 }
 
-fn table_ui(ui: &mut egui::Ui, align: &[Align], header: &[Inline], rows: &[Vec<Inline>], state: &mut LessonState<'_>) {
+fn table_ui(
+    ui: &mut egui::Ui,
+    align: &[Align],
+    header: &[Inline],
+    rows: &[Vec<Inline>],
+    state: &mut LessonState<'_>,
+) {
     let id = ui.next_auto_id();
+    let columns = header.len().max(rows.first().map_or(1, Vec::len)).max(1);
+    // Share the column among the table's columns so it never overflows.
+    let cell_width = ((ui.available_width() - 24.0) / columns as f32 - 18.0).clamp(60.0, 320.0);
     egui::Frame::new()
-        .stroke(Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color))
+        .stroke(Stroke::new(
+            1.0,
+            ui.visuals().widgets.noninteractive.bg_stroke.color,
+        ))
         .corner_radius(4.0)
         .inner_margin(6.0)
         .show(ui, |ui| {
@@ -213,12 +252,12 @@ fn table_ui(ui: &mut egui::Ui, align: &[Align], header: &[Inline], rows: &[Vec<I
                 .spacing([18.0, 6.0])
                 .show(ui, |ui| {
                     for (col, cell) in header.iter().enumerate() {
-                        cell_ui(ui, cell, align.get(col), true, state);
+                        cell_ui(ui, cell, align.get(col), cell_width, true, state);
                     }
                     ui.end_row();
                     for row in rows {
                         for (col, cell) in row.iter().enumerate() {
-                            cell_ui(ui, cell, align.get(col), false, state);
+                            cell_ui(ui, cell, align.get(col), cell_width, false, state);
                         }
                         ui.end_row();
                     }
@@ -226,20 +265,34 @@ fn table_ui(ui: &mut egui::Ui, align: &[Align], header: &[Inline], rows: &[Vec<I
         });
 }
 
-fn cell_ui(ui: &mut egui::Ui, cell: &Inline, align: Option<&Align>, header: bool, state: &mut LessonState<'_>) {
+fn cell_ui(
+    ui: &mut egui::Ui,
+    cell: &Inline,
+    align: Option<&Align>,
+    width: f32,
+    header: bool,
+    state: &mut LessonState<'_>,
+) {
     let layout = match align {
-        Some(Align::Right) => egui::Layout::right_to_left(egui::Align::Center),
+        Some(Align::Right) => egui::Layout::top_down(egui::Align::Max),
         Some(Align::Center) => egui::Layout::top_down(egui::Align::Center),
-        _ => egui::Layout::left_to_right(egui::Align::Center),
+        _ => egui::Layout::top_down(egui::Align::Min),
     };
-    ui.with_layout(layout, |ui| {
-        ui.set_max_width(320.0);
+    ui.allocate_ui_with_layout(egui::vec2(width, 0.0), layout, |ui| {
+        ui.set_max_width(width);
         inline_ui(ui, cell, theme::BODY_SIZE - 1.0, header, state.navigate);
     });
 }
 
-fn widget_ui(ui: &mut egui::Ui, id: &str, spec: &WidgetSpec, slots: &mut HashMap<String, WidgetSlot>) {
-    let slot = slots.entry(id.to_owned()).or_insert_with(|| widgets::create(spec));
+fn widget_ui(
+    ui: &mut egui::Ui,
+    id: &str,
+    spec: &WidgetSpec,
+    slots: &mut HashMap<String, WidgetSlot>,
+) {
+    let slot = slots
+        .entry(id.to_owned())
+        .or_insert_with(|| widgets::create(spec));
     egui::Frame::group(ui.style())
         .inner_margin(10.0)
         .corner_radius(6.0)
@@ -247,7 +300,11 @@ fn widget_ui(ui: &mut egui::Ui, id: &str, spec: &WidgetSpec, slots: &mut HashMap
             ui.set_width(ui.available_width());
             ui.push_id(id, |ui| match slot {
                 Ok(widget) => widget.ui(ui),
-                Err(message) => error_box(ui, &format!("Widget `{}` cannot be shown", spec.name), message),
+                Err(message) => error_box(
+                    ui,
+                    &format!("Widget `{}` cannot be shown", spec.name),
+                    message,
+                ),
             });
         });
 }
@@ -261,7 +318,11 @@ pub fn error_box(ui: &mut egui::Ui, title: &str, message: &str) {
         .inner_margin(10.0)
         .show(ui, |ui| {
             ui.set_width(ui.available_width());
-            ui.label(RichText::new(title).strong().color(Color32::from_rgb(220, 60, 60)));
+            ui.label(
+                RichText::new(title)
+                    .strong()
+                    .color(Color32::from_rgb(220, 60, 60)),
+            );
             ui.label(message);
         });
 }

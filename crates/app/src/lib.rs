@@ -32,7 +32,8 @@ impl eframe::App for KinolabApp {
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(hash) = self.take_pending_hash() {
             log::debug!("now at {hash}");
-            ui.ctx().send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
         }
     }
 
@@ -44,7 +45,10 @@ impl eframe::App for KinolabApp {
 /// Set up the app for eframe: text styles, theme, stored progress.
 pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
     #[cfg(target_arch = "wasm32")]
-    let stored = web::load_progress();
+    let stored = {
+        let _ = cc; // the browser's own storage is read directly
+        web::load_progress()
+    };
     #[cfg(not(target_arch = "wasm32"))]
     let stored = cc.storage.and_then(|s| s.get_string(progress::STORAGE_KEY));
     KinolabApp::new(stored.as_deref(), hash)

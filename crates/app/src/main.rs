@@ -4,7 +4,10 @@
 fn main() -> eframe::Result {
     env_logger::init();
     // An optional lesson address opens that lesson: `kinolab-lab automation/ways-to-move`.
-    let hash = std::env::args().nth(1).map(|a| format!("#/{a}")).unwrap_or_default();
+    let hash = std::env::args()
+        .nth(1)
+        .map(|a| format!("#/{a}"))
+        .unwrap_or_default();
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])

@@ -167,8 +167,27 @@ impl MathBox {
 ///
 /// The widget is at least one text row tall and is centred on the same line
 /// as the text around it, so in `ui.horizontal_wrapped` its baseline lines
-/// up with that of neighbouring labels. Tall formulas grow symmetrically.
+/// up with that of neighbouring labels. Tall formulas grow symmetrically;
+/// egui does not move widgets already placed in the row, so labels before a
+/// tall formula only stay aligned if the row is made tall enough up front
+/// with `ui.set_row_height` (see [`inline_size`]).
 pub fn math_widget(ui: &mut Ui, math: &Math, style: &MathStyle) -> Response {
+    let (layout, placement) = layout_inline(ui, math, style);
+    let (rect, response) = ui.allocate_exact_size(placement.size, Sense::hover());
+    if ui.is_rect_visible(rect) {
+        let origin = rect.left_top() + vec2(0.0, placement.baseline);
+        layout.paint(ui.painter(), origin, style.color);
+    }
+    response
+}
+
+/// The size [`math_widget`] will allocate for `math`, for callers that want
+/// to size a row of text before filling it.
+pub fn inline_size(ui: &Ui, math: &Math, style: &MathStyle) -> Vec2 {
+    layout_inline(ui, math, style).1.size
+}
+
+fn layout_inline(ui: &Ui, math: &Math, style: &MathStyle) -> (MathBox, InlinePlacement) {
     let (layout, line) = ui.ctx().fonts_mut(|fonts| {
         (
             layout_math(fonts, math, style, MathMode::Inline),
@@ -176,12 +195,7 @@ pub fn math_widget(ui: &mut Ui, math: &Math, style: &MathStyle) -> Response {
         )
     });
     let placement = inline_placement(&layout, line);
-    let (rect, response) = ui.allocate_exact_size(placement.size, Sense::hover());
-    if ui.is_rect_visible(rect) {
-        let origin = rect.left_top() + vec2(0.0, placement.baseline);
-        layout.paint(ui.painter(), origin, style.color);
-    }
-    response
+    (layout, placement)
 }
 
 /// How much larger a display formula is than the text around it.
@@ -198,10 +212,14 @@ pub fn display_math(ui: &mut Ui, math: &Math, style: &MathStyle) -> Response {
         .ctx()
         .fonts_mut(|fonts| layout_math(fonts, math, &style, MathMode::Display));
     let padding = 0.3 * style.size;
-    let size = vec2(
-        ui.available_width().max(layout.width),
-        layout.height() + 2.0 * padding,
-    );
+    // Horizontal layouts and scroll areas may offer unbounded width.
+    let available = ui.available_width();
+    let width = if available.is_finite() {
+        available.max(layout.width)
+    } else {
+        layout.width
+    };
+    let size = vec2(width, layout.height() + 2.0 * padding);
     let (rect, response) = ui.allocate_exact_size(size, Sense::hover());
     if ui.is_rect_visible(rect) {
         let origin = pos2(
@@ -349,7 +367,7 @@ impl Metrics {
             let bounds = galley.mesh_bounds;
             bounds
                 .is_positive()
-                .then(|| (baseline - bounds.min.y, baseline - bounds.max.y))
+                .then_some((baseline - bounds.min.y, baseline - bounds.max.y))
         };
         let x_height = ink(fonts, "x")
             .map_or(0.5, |(top, _)| top / size)
@@ -483,17 +501,14 @@ fn takes_limits(base: &Math) -> bool {
     }
 }
 
-/// Whether a base is a single symbol, whose scripts are placed by fixed
-/// shifts rather than relative to the base's height.
+/// Whether a base is a single character-sized symbol, whose scripts are
+/// placed by fixed shifts rather than relative to the base's height.
 fn is_single_symbol(base: &Math) -> bool {
-    matches!(
-        base,
-        Math::Ident { .. }
-            | Math::Number { .. }
-            | Math::Symbol(_)
-            | Math::Op { .. }
-            | Math::Function(_)
-    )
+    match base {
+        Math::Op { kind, .. } => *kind != OpKind::Large,
+        Math::Ident { .. } | Math::Number { .. } | Math::Symbol(_) | Math::Function(_) => true,
+        _ => false,
+    }
 }
 
 /// Glyphs the default fonts lack, and a look-alike they have.
@@ -571,9 +586,9 @@ impl<'f, 'v> Typesetter<'f, 'v> {
             Math::Ident { text, variant } | Math::Number { text, variant } => {
                 self.styled_text(text, *variant, size)
             }
-            Math::Symbol(text) => {
-                dots(text, size, self.axis(size)).unwrap_or_else(|| self.text(text, size, false))
-            }
+            Math::Symbol(text) => dots(text, size, self.axis(size))
+                .or_else(|| primes(text, size))
+                .unwrap_or_else(|| self.text(text, size, false)),
             Math::Op {
                 text,
                 kind: OpKind::Large,
@@ -699,7 +714,13 @@ impl<'f, 'v> Typesetter<'f, 'v> {
 
     /// `∑`, `∫`, …: larger in display style, centred on the math axis.
     fn large_operator(&mut self, text: &str, level: Level) -> MathBox {
-        let scale = if level.display { 1.45 } else { 1.1 };
+        let integral = matches!(text, "∫" | "∬" | "∮");
+        let scale = match (level.display, integral) {
+            (true, true) => 2.0,
+            (true, false) => 1.45,
+            (false, true) => 1.3,
+            (false, false) => 1.1,
+        };
         let glyph = self.text(text, level.size * scale, false);
         let center = (glyph.descent - glyph.ascent) / 2.0;
         let shift = -self.axis(level.size) - center;
@@ -1020,8 +1041,8 @@ impl<'f, 'v> Typesetter<'f, 'v> {
                     .enumerate()
                     .map(|(column, cell)| {
                         // In `aligned`, `&=` continues the left-hand side.
-                        let leading =
-                            (kind == MatrixKind::Aligned && column % 2 == 1).then_some(Class::Ord);
+                        let leading = (kind == MatrixKind::Aligned && !column.is_multiple_of(2))
+                            .then_some(Class::Ord);
                         self.as_row(cell, cell_level, depth, leading)
                     })
                     .collect()
@@ -1153,7 +1174,7 @@ enum CellAlign {
 fn cell_alignment(kind: MatrixKind, column: usize) -> CellAlign {
     match kind {
         MatrixKind::Cases => CellAlign::Left,
-        MatrixKind::Aligned if column % 2 == 0 => CellAlign::Right,
+        MatrixKind::Aligned if column.is_multiple_of(2) => CellAlign::Right,
         MatrixKind::Aligned => CellAlign::Left,
         _ => CellAlign::Center,
     }
@@ -1163,7 +1184,7 @@ fn cell_alignment(kind: MatrixKind, column: usize) -> CellAlign {
 fn column_gap(kind: MatrixKind, column: usize, size: f32) -> f32 {
     match kind {
         // `a &= b` reads as one equation: no gap inside a pair.
-        MatrixKind::Aligned if column % 2 == 0 => 0.0,
+        MatrixKind::Aligned if column.is_multiple_of(2) => 0.0,
         MatrixKind::Aligned | MatrixKind::Cases => 1.2 * size,
         _ => 0.8 * size,
     }
@@ -1399,6 +1420,28 @@ fn dots(text: &str, size: f32, axis: f32) -> Option<MathBox> {
         );
     }
     out.width = right + side;
+    Some(out)
+}
+
+/// `′`, `″`, `‴` drawn as raised slanted strokes: the fonts' primes are
+/// acute-like marks that sit too low and too far apart.
+fn primes(text: &str, size: f32) -> Option<MathBox> {
+    let count = text.chars().try_fold(0, |count, c| match c {
+        '′' => Some(count + 1),
+        '″' => Some(count + 2),
+        '‴' => Some(count + 3),
+        _ => None,
+    })?;
+    let width = 1.4 * stroke_width(size);
+    let (top, bottom) = (-0.78 * size, -0.42 * size);
+    let step = 0.16 * size;
+    let mut out = MathBox::default();
+    for k in 0..count {
+        let x = 0.05 * size + k as f32 * step;
+        let points = vec![pos2(x + 0.12 * size, top), pos2(x + 0.04 * size, bottom)];
+        out.draw(Paint::Line { points, width }, top - width / 2.0, 0.0);
+    }
+    out.width = 0.1 * size + 0.08 * size + count as f32 * step;
     Some(out)
 }
 
@@ -1677,6 +1720,45 @@ mod tests {
         assert!(inline_rect.height() >= expected.height());
         assert!(display_rect.width() >= inline_rect.width());
         assert!(display_rect.height() > inline_rect.height());
+    }
+
+    #[test]
+    fn baseline_matches_labels_in_a_sized_row() {
+        let math = parse("\\frac{a}{b} + x^2").expect("parses");
+        let ctx = egui::Context::default();
+        let mut rects = Vec::new();
+        let output = ctx.run_ui(egui::RawInput::default(), |ui| {
+            ui.horizontal_wrapped(|ui| {
+                ui.set_row_height(inline_size(ui, &math, &STYLE).y);
+                rects.push(ui.label(egui::RichText::new("x").size(STYLE.size)).rect);
+                rects.push(math_widget(ui, &math, &STYLE).rect);
+                rects.push(ui.label(egui::RichText::new("y").size(STYLE.size)).rect);
+            });
+        });
+        output.drop_without_applying_deltas();
+        let [before, formula, after] = rects[..] else {
+            panic!("three widgets: {rects:?}");
+        };
+        // Labels and formula are centred on one line, so baselines agree.
+        assert!(
+            (before.center().y - formula.center().y).abs() < 0.5,
+            "{rects:?}"
+        );
+        assert!(
+            (after.center().y - formula.center().y).abs() < 0.5,
+            "{rects:?}"
+        );
+        assert!(formula.height() > before.height());
+    }
+
+    #[test]
+    fn primes_are_drawn_after_their_base() {
+        let f = inline("f");
+        let prime = inline("f'");
+        let double = inline("f''");
+        assert!(prime.width > f.width && double.width > prime.width);
+        assert!(prime.ascent >= f.ascent);
+        assert_eq!(count_text(&prime), 1);
     }
 
     #[test]

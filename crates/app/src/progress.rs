@@ -103,17 +103,32 @@ mod tests {
         let (back, notice) = Progress::restore(Some(&p.to_json()));
         assert_eq!(back, p);
         assert_eq!(notice, None);
-        assert_eq!(back.quizzes["a/b#0"], QuizRecord { attempts: 2, correct: true });
+        assert_eq!(
+            back.quizzes["a/b#0"],
+            QuizRecord {
+                attempts: 2,
+                correct: true
+            }
+        );
     }
 
     #[test]
     fn corrupted_state_resets_with_a_notice() {
         let (p, notice) = Progress::restore(Some("{not json"));
         assert_eq!(p, Progress::default());
-        assert!(notice.unwrap().0.starts_with("Your saved progress could not be read"));
-        let (_, notice) = Progress::restore(Some(r#"{"version":99,"visited":[],"quizzes":{},"dark":null}"#));
+        assert!(
+            notice
+                .unwrap()
+                .0
+                .starts_with("Your saved progress could not be read")
+        );
+        let (_, notice) = Progress::restore(Some(
+            r#"{"version":99,"visited":[],"quizzes":{},"dark":null}"#,
+        ));
         assert!(notice.unwrap().0.contains("format 99"));
-        let (_, notice) = Progress::restore(Some(r#"{"version":1,"visited":[],"quizzes":{},"dark":null,"extra":1}"#));
+        let (_, notice) = Progress::restore(Some(
+            r#"{"version":1,"visited":[],"quizzes":{},"dark":null,"extra":1}"#,
+        ));
         assert!(notice.is_some(), "unknown fields are not silently kept");
         assert_eq!(Progress::restore(None), (Progress::default(), None));
     }

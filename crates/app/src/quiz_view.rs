@@ -45,7 +45,13 @@ fn plain(inline: &Inline) -> Option<String> {
 
 /// Draw the quiz; returns true when the learner pressed Check with a
 /// well-formed answer this frame (the verdict is then in `state`).
-pub fn quiz_ui(ui: &mut egui::Ui, id: &str, quiz: &Quiz, state: &mut QuizState, navigate: &mut Option<Page>) -> bool {
+pub fn quiz_ui(
+    ui: &mut egui::Ui,
+    id: &str,
+    quiz: &Quiz,
+    state: &mut QuizState,
+    navigate: &mut Option<Page>,
+) -> bool {
     let mut checked = false;
     let accent = theme::accent(ui);
     egui::Frame::new()
@@ -73,7 +79,9 @@ pub fn quiz_ui(ui: &mut egui::Ui, id: &str, quiz: &Quiz, state: &mut QuizState, 
                             None => {
                                 state.verdict = None;
                                 state.input_error = Some(match quiz.kind {
-                                    QuizKind::Numeric { .. } => "Type a number first, such as 120 or 0.5.".to_owned(),
+                                    QuizKind::Numeric { .. } => {
+                                        "Type a number first, such as 120 or 0.5.".to_owned()
+                                    }
                                     _ => "Choose an answer first.".to_owned(),
                                 });
                             }
@@ -88,9 +96,17 @@ pub fn quiz_ui(ui: &mut egui::Ui, id: &str, quiz: &Quiz, state: &mut QuizState, 
                     let (text, color) = if right {
                         ("Right.", Color32::from_rgb(40, 160, 80))
                     } else {
-                        ("Not quite. Read why, then try again.", Color32::from_rgb(210, 70, 60))
+                        (
+                            "Not quite. Read why, then try again.",
+                            Color32::from_rgb(210, 70, 60),
+                        )
                     };
-                    ui.label(RichText::new(text).strong().size(theme::BODY_SIZE).color(color));
+                    ui.label(
+                        RichText::new(text)
+                            .strong()
+                            .size(theme::BODY_SIZE)
+                            .color(color),
+                    );
                     inline_ui(ui, &quiz.explain, theme::BODY_SIZE, false, navigate);
                 }
             });
@@ -99,7 +115,12 @@ pub fn quiz_ui(ui: &mut egui::Ui, id: &str, quiz: &Quiz, state: &mut QuizState, 
 }
 
 /// The controls for the quiz's kind; returns the answer entered, if any.
-fn answer_controls(ui: &mut egui::Ui, quiz: &Quiz, state: &mut QuizState, navigate: &mut Option<Page>) -> Option<Answer> {
+fn answer_controls(
+    ui: &mut egui::Ui,
+    quiz: &Quiz,
+    state: &mut QuizState,
+    navigate: &mut Option<Page>,
+) -> Option<Answer> {
     match &quiz.kind {
         QuizKind::Single { options, .. } => {
             for (i, option) in options.iter().enumerate() {
@@ -150,7 +171,13 @@ fn answer_controls(ui: &mut egui::Ui, quiz: &Quiz, state: &mut QuizState, naviga
 
 /// One option: a radio button or checkbox labelled with the option's text
 /// (formulas drawn beside an unlabelled control). Returns true if clicked.
-fn option_control(ui: &mut egui::Ui, option: &Inline, on: bool, checkbox: bool, navigate: &mut Option<Page>) -> bool {
+fn option_control(
+    ui: &mut egui::Ui,
+    option: &Inline,
+    on: bool,
+    checkbox: bool,
+    navigate: &mut Option<Page>,
+) -> bool {
     let text = plain(option);
     let label = RichText::new(text.clone().unwrap_or_default()).size(theme::BODY_SIZE);
     let response = if checkbox {
@@ -161,7 +188,11 @@ fn option_control(ui: &mut egui::Ui, option: &Inline, on: bool, checkbox: bool, 
     };
     if text.is_none() {
         // The control has no text of its own: name it for screen readers.
-        let role = if checkbox { egui::Role::CheckBox } else { egui::Role::RadioButton };
+        let role = if checkbox {
+            egui::Role::CheckBox
+        } else {
+            egui::Role::RadioButton
+        };
         let name = kinolab_lessons::plain_text(option);
         response.widget_info(|| egui::WidgetInfo::selected(role, true, on, name.clone()));
         inline_ui(ui, option, theme::BODY_SIZE, false, navigate);

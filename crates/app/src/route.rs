@@ -15,9 +15,14 @@ pub enum Page {
 impl Page {
     /// Read a URL hash (with or without the leading `#`).
     pub fn from_hash(hash: &str) -> Page {
-        let path = hash.trim_start_matches('#').trim_start_matches("dev").trim_matches('/');
+        let path = hash
+            .trim_start_matches('#')
+            .trim_start_matches("dev")
+            .trim_matches('/');
         match path.split_once('/') {
-            Some((unit, lesson)) if !unit.is_empty() && !lesson.is_empty() && !lesson.contains('/') => {
+            Some((unit, lesson))
+                if !unit.is_empty() && !lesson.is_empty() && !lesson.contains('/') =>
+            {
                 Page::Lesson(format!("{unit}/{lesson}"))
             }
             _ => Page::Home,

@@ -62,11 +62,26 @@ fn apply_text_styles(ctx: &egui::Context) {
     for theme in [egui::Theme::Dark, egui::Theme::Light] {
         ctx.style_mut_of(theme, |style| {
             style.text_styles = [
-                (TextStyle::Heading, FontId::new(24.0, FontFamily::Proportional)),
-                (TextStyle::Body, FontId::new(BODY_SIZE, FontFamily::Proportional)),
-                (TextStyle::Button, FontId::new(15.0, FontFamily::Proportional)),
-                (TextStyle::Small, FontId::new(12.5, FontFamily::Proportional)),
-                (TextStyle::Monospace, FontId::new(CODE_SIZE, FontFamily::Monospace)),
+                (
+                    TextStyle::Heading,
+                    FontId::new(24.0, FontFamily::Proportional),
+                ),
+                (
+                    TextStyle::Body,
+                    FontId::new(BODY_SIZE, FontFamily::Proportional),
+                ),
+                (
+                    TextStyle::Button,
+                    FontId::new(15.0, FontFamily::Proportional),
+                ),
+                (
+                    TextStyle::Small,
+                    FontId::new(12.5, FontFamily::Proportional),
+                ),
+                (
+                    TextStyle::Monospace,
+                    FontId::new(CODE_SIZE, FontFamily::Monospace),
+                ),
             ]
             .into();
             style.spacing.item_spacing = egui::vec2(8.0, 6.0);

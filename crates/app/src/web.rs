@@ -21,7 +21,9 @@ fn window() -> Option<web_sys::Window> {
 /// The browser's current hash, read fresh (not eframe's copy, which lags
 /// one event behind our own changes).
 pub fn current_hash() -> String {
-    window().and_then(|w| w.location().hash().ok()).unwrap_or_default()
+    window()
+        .and_then(|w| w.location().hash().ok())
+        .unwrap_or_default()
 }
 
 /// Follow the back and forward buttons and edited URLs.
@@ -39,10 +41,10 @@ pub fn before_frame(app: &mut KinolabApp, _frame: &eframe::Frame) {
 /// Push the app's navigation to the URL, store progress, update signals.
 pub fn after_frame(app: &mut KinolabApp) {
     if let Some(hash) = app.take_pending_hash() {
-        if let Some(w) = window() {
-            if current_hash() != hash {
-                let _ = w.location().set_hash(&hash);
-            }
+        if let Some(w) = window()
+            && current_hash() != hash
+        {
+            let _ = w.location().set_hash(&hash);
         }
         LAST_HASH.set(Some(current_hash()));
     }
@@ -53,12 +55,22 @@ pub fn after_frame(app: &mut KinolabApp) {
         Page::Home => String::new(),
         Page::Lesson(address) => address.clone(),
     };
+    if app.frames_drawn() == 0 {
+        return;
+    }
     let signal = format!("{page}|{}", app.title());
     if LAST_SIGNAL.with_borrow(|last| *last != signal) {
         if let Some(document) = window().and_then(|w| w.document()) {
             document.set_title(&app.title());
             if let Some(root) = document.document_element() {
                 let _ = root.set_attribute("data-kinolab-page", &page);
+                if root.get_attribute("data-kinolab-ready").is_none() {
+                    // Milliseconds from navigation to the first drawn frame.
+                    let now = window()
+                        .and_then(|w| w.performance())
+                        .map_or(0.0, |p| p.now());
+                    let _ = root.set_attribute("data-kinolab-first-frame-ms", &format!("{now:.1}"));
+                }
                 let _ = root.set_attribute("data-kinolab-ready", "1");
             }
         }

@@ -1,3 +1,4 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
 //! The lab driven the way a learner drives it: by labels, clicks and typing.
 
 use egui_kittest::Harness;
@@ -19,18 +20,25 @@ const LESSON: &str = "automation/open-and-closed-worlds";
 fn opening_a_lesson_by_its_label_shows_it_and_records_the_visit() {
     let mut h = harness(KinolabApp::new(None, ""));
     assert_eq!(h.state().page(), &Page::Home);
-    h.get_all_by_label("○ Open and closed worlds").next().unwrap().click();
+    h.get_all_by_label("○ Open and closed worlds")
+        .next()
+        .unwrap()
+        .click();
     h.run();
     assert_eq!(h.state().page(), &Page::Lesson(LESSON.into()));
     assert!(h.state().progress().visited.contains(LESSON));
-    assert_eq!(h.state_mut().take_pending_hash().as_deref(), Some("#/automation/open-and-closed-worlds"));
+    assert_eq!(
+        h.state_mut().take_pending_hash().as_deref(),
+        Some("#/automation/open-and-closed-worlds")
+    );
     h.get_by_label("After this lesson you can");
 }
 
 #[test]
 fn a_right_answer_is_praised_and_explained() {
     let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
-    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell").click();
+    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell")
+        .click();
     h.run();
     h.get_all_by_label("Check answer").next().unwrap().click();
     h.run();
@@ -44,20 +52,29 @@ fn a_right_answer_is_praised_and_explained() {
 #[test]
 fn a_wrong_answer_is_flagged_then_can_be_corrected() {
     let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
-    h.get_by_label("A lawn-mowing robot in a family garden").click();
+    h.get_by_label("A lawn-mowing robot in a family garden")
+        .click();
     h.run();
     h.get_all_by_label("Check answer").next().unwrap().click();
     h.run();
     h.get_by_label("Not quite. Read why, then try again.");
     h.get_by_label_contains("Inside the fenced cell the conveyor");
     assert!(!h.state().progress().quizzes[&format!("{LESSON}#0")].correct);
-    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell").click();
+    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell")
+        .click();
     h.run();
-    assert!(h.query_by_label("Not quite. Read why, then try again.").is_none(), "changing the answer clears the verdict");
+    assert!(
+        h.query_by_label("Not quite. Read why, then try again.")
+            .is_none(),
+        "changing the answer clears the verdict"
+    );
     h.get_all_by_label("Check answer").next().unwrap().click();
     h.run();
     h.get_by_label("Right.");
-    assert_eq!(h.state().progress().quizzes[&format!("{LESSON}#0")].attempts, 2);
+    assert_eq!(
+        h.state().progress().quizzes[&format!("{LESSON}#0")].attempts,
+        2
+    );
 }
 
 #[test]
@@ -99,7 +116,10 @@ fn next_and_previous_walk_the_course() {
     let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
     h.get_by_label_contains("Next: ").click();
     h.run();
-    assert_eq!(h.state().page(), &Page::Lesson("automation/ways-to-move".into()));
+    assert_eq!(
+        h.state().page(),
+        &Page::Lesson("automation/ways-to-move".into())
+    );
     h.get_by_label_contains("← Previous: ").click();
     h.run();
     assert_eq!(h.state().page(), &Page::Lesson(LESSON.into()));
@@ -107,7 +127,10 @@ fn next_and_previous_walk_the_course() {
 
 #[test]
 fn corrupted_progress_resets_with_a_visible_notice() {
-    let h = harness(KinolabApp::new(Some("{\"version\": 1, \"visited\": oops"), ""));
+    let h = harness(KinolabApp::new(
+        Some("{\"version\": 1, \"visited\": oops"),
+        "",
+    ));
     h.get_by_label_contains("Your saved progress could not be read");
     assert!(h.state().progress().visited.is_empty());
 }
@@ -126,7 +149,10 @@ fn every_lesson_renders_without_widget_errors() {
     for address in addresses {
         h.state_mut().follow_hash(&format!("#/{address}"));
         h.run();
-        assert!(h.query_by_label_contains("cannot be shown").is_none(), "{address} shows an error box");
+        assert!(
+            h.query_by_label_contains("cannot be shown").is_none(),
+            "{address} shows an error box"
+        );
         assert!(h.query_by_label_contains("Lesson not found").is_none());
     }
 }
@@ -135,7 +161,11 @@ fn every_lesson_renders_without_widget_errors() {
 fn the_theme_toggle_switches_and_is_remembered() {
     let mut h = harness(KinolabApp::new(None, ""));
     let dark_before = h.ctx.theme() == egui::Theme::Dark;
-    let label = if dark_before { "Light theme" } else { "Dark theme" };
+    let label = if dark_before {
+        "Light theme"
+    } else {
+        "Dark theme"
+    };
     h.get_by_label(label).click();
     h.run();
     assert_eq!(h.state().progress().dark, Some(!dark_before));

@@ -46,7 +46,11 @@ pub struct CellError {
 
 impl fmt::Display for CellError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: must be a finite length ≥ 0 m, got {}", self.field, self.value)
+        write!(
+            f,
+            "{}: must be a finite length ≥ 0 m, got {}",
+            self.field, self.value
+        )
     }
 }
 
@@ -91,7 +95,11 @@ impl SplitMix64 {
 
 impl PickCell {
     /// A cell, checked: every length finite and non-negative.
-    pub fn new(placement_error: f64, gripper_tolerance: f64, sensor_error: f64) -> Result<Self, CellError> {
+    pub fn new(
+        placement_error: f64,
+        gripper_tolerance: f64,
+        sensor_error: f64,
+    ) -> Result<Self, CellError> {
         for (field, value) in [
             ("placement_error", placement_error),
             ("gripper_tolerance", gripper_tolerance),
@@ -101,7 +109,11 @@ impl PickCell {
                 return Err(CellError { field, value });
             }
         }
-        Ok(Self { placement_error, gripper_tolerance, sensor_error })
+        Ok(Self {
+            placement_error,
+            gripper_tolerance,
+            sensor_error,
+        })
     }
 
     /// Long-run share of parts the scripted robot grasps.

@@ -1,3 +1,4 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
 use kinolab_autonomy::PickCell;
 
 #[test]
@@ -21,13 +22,18 @@ fn simulated_rates_converge_to_the_closed_forms() {
     let cell = PickCell::new(0.03, 0.01, 0.015).unwrap();
     let n = 40_000;
     let trials = cell.run(n, 42);
-    let rate = |f: fn(&kinolab_autonomy::PickTrial) -> bool| trials.iter().filter(|t| f(t)).count() as f64 / n as f64;
+    let rate = |f: fn(&kinolab_autonomy::PickTrial) -> bool| {
+        trials.iter().filter(|t| f(t)).count() as f64 / n as f64
+    };
     for (simulated, exact) in [
         (rate(|t| t.scripted_grasped), cell.scripted_success()),
         (rate(|t| t.sensing_grasped), cell.sensing_success()),
     ] {
         let sigma = (exact * (1.0 - exact) / n as f64).sqrt();
-        assert!((simulated - exact).abs() < 4.0 * sigma, "{simulated} vs {exact}");
+        assert!(
+            (simulated - exact).abs() < 4.0 * sigma,
+            "{simulated} vs {exact}"
+        );
     }
     for t in &trials {
         assert!(t.part[0].hypot(t.part[1]) <= 0.03 + 1e-15);
@@ -43,10 +49,18 @@ fn the_same_seed_gives_the_same_parts() {
 
 #[test]
 fn bad_parameters_name_the_field() {
-    assert_eq!(PickCell::new(-1.0, 0.01, 0.0).unwrap_err().field, "placement_error");
-    assert_eq!(PickCell::new(0.0, f64::NAN, 0.0).unwrap_err().field, "gripper_tolerance");
     assert_eq!(
-        PickCell::new(0.0, 0.0, f64::INFINITY).unwrap_err().to_string(),
+        PickCell::new(-1.0, 0.01, 0.0).unwrap_err().field,
+        "placement_error"
+    );
+    assert_eq!(
+        PickCell::new(0.0, f64::NAN, 0.0).unwrap_err().field,
+        "gripper_tolerance"
+    );
+    assert_eq!(
+        PickCell::new(0.0, 0.0, f64::INFINITY)
+            .unwrap_err()
+            .to_string(),
         "sensor_error: must be a finite length ≥ 0 m, got inf"
     );
 }

@@ -1,1 +1,139 @@
+//! The benchmark kernels: the core functions the lab calls while a learner
+//! plays, each wrapped so that one call is one unit of work.
+//!
+//! The same list runs natively under criterion (`benches/kernels.rs`) and,
+//! compiled to wasm, in headless Chromium (`tests/e2e/bench.mjs` calls
+//! [`run_kernel`]); `cargo xtask bench` prints both side by side. Each
+//! kernel returns a checksum so the optimiser cannot drop the work.
 
+use std::hint::black_box;
+
+/// A named unit of work.
+#[derive(Debug, Clone, Copy)]
+pub struct Kernel {
+    pub name: &'static str,
+    pub run: fn() -> f64,
+}
+
+const ROTATION: &str = r"\begin{bmatrix} \cos\theta & \sin\theta & 0 \\ -\sin\theta & \cos\theta & 0 \\ 0 & 0 & 1 \end{bmatrix}";
+
+fn parse_lesson() -> f64 {
+    let files = kinolab_lessons::bundled::markdown_files();
+    let (path, text) = files
+        .iter()
+        .find(|(p, _)| p.ends_with("02-ways-to-move.md"))
+        .copied()
+        .unwrap_or(("", ""));
+    match kinolab_lessons::parse_lesson(path, black_box(text)) {
+        Ok((_, blocks)) => blocks.len() as f64,
+        Err(_) => -1.0,
+    }
+}
+
+fn parse_formula() -> f64 {
+    match kinolab_lessons::math::parse(black_box(ROTATION)) {
+        Ok(kinolab_lessons::math::Math::Matrix { rows, .. }) => rows.len() as f64,
+        _ => -1.0,
+    }
+}
+
+fn stability() -> f64 {
+    let feet = [
+        [0.3, 0.2],
+        [0.0, 0.25],
+        [-0.3, 0.2],
+        [-0.3, -0.2],
+        [0.0, -0.25],
+        [0.3, -0.2],
+    ];
+    kinolab_locomotion::static_stability(black_box([0.05, 0.02]), black_box(&feet))
+        .map_or(f64::NAN, |s| s.margin)
+}
+
+fn leg_events() -> f64 {
+    kinolab_locomotion::leg_events(black_box(17)).map_or(f64::NAN, |n| n as f64)
+}
+
+fn pick_cell() -> f64 {
+    match kinolab_autonomy::PickCell::new(0.03, 0.01, 0.002) {
+        Ok(cell) => cell
+            .run(black_box(100), 7)
+            .iter()
+            .filter(|t| t.scripted_grasped)
+            .count() as f64,
+        Err(_) => f64::NAN,
+    }
+}
+
+/// Every kernel, in report order.
+pub const KERNELS: &[Kernel] = &[
+    Kernel {
+        name: "lesson_parse",
+        run: parse_lesson,
+    },
+    Kernel {
+        name: "formula_parse_matrix",
+        run: parse_formula,
+    },
+    Kernel {
+        name: "stability_6_feet",
+        run: stability,
+    },
+    Kernel {
+        name: "leg_events_17",
+        run: leg_events,
+    },
+    Kernel {
+        name: "pick_cell_100_parts",
+        run: pick_cell,
+    },
+];
+
+/// Run kernel `name` `iterations` times; returns the sum of its checksums,
+/// or NaN for an unknown name.
+pub fn run_named(name: &str, iterations: u32) -> f64 {
+    match KERNELS.iter().find(|k| k.name == name) {
+        Some(kernel) => (0..iterations).map(|_| black_box((kernel.run)())).sum(),
+        None => f64::NAN,
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+mod wasm {
+    use wasm_bindgen::prelude::*;
+
+    /// The kernel names, comma-separated.
+    #[wasm_bindgen]
+    pub fn kernel_names() -> String {
+        super::KERNELS
+            .iter()
+            .map(|k| k.name)
+            .collect::<Vec<_>>()
+            .join(",")
+    }
+
+    /// See [`super::run_named`].
+    #[wasm_bindgen]
+    pub fn run_kernel(name: &str, iterations: u32) -> f64 {
+        super::run_named(name, iterations)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_kernel_does_real_work() {
+        for kernel in KERNELS {
+            let value = (kernel.run)();
+            assert!(
+                value.is_finite() && value > 0.0,
+                "{} returned {value}",
+                kernel.name
+            );
+        }
+        assert_eq!(run_named("formula_parse_matrix", 3), 9.0);
+        assert!(run_named("nope", 1).is_nan());
+    }
+}

@@ -1,1 +1,155 @@
+//! Kinolab for JavaScript.
+//!
+//! ```js
+//! import init, * as kinolab from "./pkg/kinolab_js.js";
+//! await init();
+//! kinolab.legEvents(6);                                  // "39916800"
+//! kinolab.staticStability([0, 0], [[1, 1], [-1, 1], [0, -1]]);
+//! ```
+//!
+//! Every function computes with the same core crates as the lab and the
+//! command line. Bad input throws an `Error` whose message names the field.
 
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+fn to_js<T: Serialize>(value: &T) -> Result<JsValue, JsError> {
+    serde_wasm_bindgen::to_value(value).map_err(|e| JsError::new(&format!("result: {e}")))
+}
+
+fn from_js<T: serde::de::DeserializeOwned>(field: &str, value: JsValue) -> Result<T, JsError> {
+    serde_wasm_bindgen::from_value(value).map_err(|e| JsError::new(&format!("{field}: {e}")))
+}
+
+/// The package version.
+#[wasm_bindgen]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_owned()
+}
+
+/// N = (2k − 1)!, as a decimal string (it outgrows JavaScript numbers).
+#[wasm_bindgen(js_name = legEvents)]
+pub fn leg_events(legs: u32) -> Result<String, JsError> {
+    kinolab_locomotion::leg_events(legs)
+        .map(|n| n.to_string())
+        .map_err(|e| JsError::new(&e.to_string()))
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct StabilityJs {
+    stable: bool,
+    margin: f64,
+    support_polygon: Vec<[f64; 2]>,
+    nearest_edge_point: [f64; 2],
+}
+
+/// Static stability: `com` is `[x, y]`, `feet` an array of `[x, y]` (metres).
+/// Returns `{ stable, margin, supportPolygon, nearestEdgePoint }`.
+#[wasm_bindgen(js_name = staticStability)]
+pub fn static_stability(com: JsValue, feet: JsValue) -> Result<JsValue, JsError> {
+    let com: [f64; 2] = from_js("com", com)?;
+    let feet: Vec<[f64; 2]> = from_js("feet", feet)?;
+    let s = kinolab_locomotion::static_stability(com, &feet)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    to_js(&StabilityJs {
+        stable: s.stable,
+        margin: s.margin,
+        support_polygon: s.polygon,
+        nearest_edge_point: s.nearest,
+    })
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct PickRunJs {
+    scripted_success: f64,
+    sensing_success: f64,
+    scripted_grasped: usize,
+    sensing_grasped: usize,
+    parts: Vec<[f64; 2]>,
+}
+
+/// The pick-and-place cell: lengths in metres, `count` parts from `seed`.
+#[wasm_bindgen(js_name = pickCell)]
+pub fn pick_cell(
+    placement_error: f64,
+    gripper_tolerance: f64,
+    sensor_error: f64,
+    count: u32,
+    seed: u32,
+) -> Result<JsValue, JsError> {
+    let cell = kinolab_autonomy::PickCell::new(placement_error, gripper_tolerance, sensor_error)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    let trials = cell.run(count.min(100_000) as usize, u64::from(seed));
+    to_js(&PickRunJs {
+        scripted_success: cell.scripted_success(),
+        sensing_success: cell.sensing_success(),
+        scripted_grasped: trials.iter().filter(|t| t.scripted_grasped).count(),
+        sensing_grasped: trials.iter().filter(|t| t.sensing_grasped).count(),
+        parts: trials.iter().map(|t| t.part).collect(),
+    })
+}
+
+#[derive(Serialize)]
+struct LessonJs {
+    address: String,
+    title: String,
+    minutes: u32,
+    objectives: Vec<String>,
+    quizzes: usize,
+    widgets: Vec<String>,
+}
+
+fn describe(address: String, lesson: &kinolab_lessons::Lesson) -> LessonJs {
+    use kinolab_lessons::Block;
+    LessonJs {
+        address,
+        title: lesson.meta.title.clone(),
+        minutes: lesson.meta.minutes,
+        objectives: lesson.meta.objectives.clone(),
+        quizzes: lesson
+            .blocks
+            .iter()
+            .filter(|b| matches!(b, Block::Quiz(_)))
+            .count(),
+        widgets: lesson
+            .blocks
+            .iter()
+            .filter_map(|b| match b {
+                Block::Widget(w) => Some(w.name.clone()),
+                _ => None,
+            })
+            .collect(),
+    }
+}
+
+/// Every embedded lesson: `[{ address, title, minutes, objectives, quizzes, widgets }]`.
+#[wasm_bindgen]
+pub fn lessons() -> Result<JsValue, JsError> {
+    let course = kinolab_lessons::bundled::course().map_err(|e| JsError::new(&e.to_string()))?;
+    let list: Vec<LessonJs> = course
+        .units
+        .iter()
+        .flat_map(|u| {
+            u.lessons
+                .iter()
+                .map(move |l| describe(format!("{}/{}", u.slug, l.slug), l))
+        })
+        .collect();
+    to_js(&list)
+}
+
+/// Parse a lesson's Markdown (for authors' tools): returns its description,
+/// or throws an error naming `file` and the line.
+#[wasm_bindgen(js_name = checkLesson)]
+pub fn check_lesson(file: &str, markdown: &str) -> Result<JsValue, JsError> {
+    let (meta, blocks) =
+        kinolab_lessons::parse_lesson(file, markdown).map_err(|e| JsError::new(&e.to_string()))?;
+    let lesson = kinolab_lessons::Lesson {
+        slug: String::new(),
+        meta,
+        blocks,
+    };
+    to_js(&describe(file.to_owned(), &lesson))
+}

@@ -35,7 +35,9 @@ pub struct Course {
 fn slug_of(name: &str) -> String {
     let stem = name.strip_suffix(".md").unwrap_or(name);
     match stem.split_once('-') {
-        Some((number, rest)) if !number.is_empty() && number.bytes().all(|b| b.is_ascii_digit()) => {
+        Some((number, rest))
+            if !number.is_empty() && number.bytes().all(|b| b.is_ascii_digit()) =>
+        {
             rest.to_owned()
         }
         _ => stem.to_owned(),
@@ -61,7 +63,11 @@ impl Course {
                 continue;
             };
             if name.contains('/') {
-                return Err(LessonError::new(path, 1, "lessons sit directly in a unit folder, not deeper"));
+                return Err(LessonError::new(
+                    path,
+                    1,
+                    "lessons sit directly in a unit folder, not deeper",
+                ));
             }
             let unit_slug = slug_of(folder);
             let unit = match course.units.iter_mut().position(|u| u.slug == unit_slug) {
@@ -85,13 +91,21 @@ impl Course {
                 let (meta, blocks) = parse_lesson(path, text)?;
                 let slug = slug_of(name);
                 if unit.lessons.iter().any(|l| l.slug == slug) {
-                    return Err(LessonError::new(path, 1, format!("two lessons in this unit share the address `{slug}`")));
+                    return Err(LessonError::new(
+                        path,
+                        1,
+                        format!("two lessons in this unit share the address `{slug}`"),
+                    ));
                 }
                 unit.lessons.push(Lesson { slug, meta, blocks });
             }
         }
         if let Some(unit) = course.units.iter().find(|u| u.title.is_empty()) {
-            return Err(LessonError::new(&unit.slug, 1, "this unit folder has no unit.md with a title"));
+            return Err(LessonError::new(
+                &unit.slug,
+                1,
+                "this unit folder has no unit.md with a title",
+            ));
         }
         Ok(course)
     }
@@ -108,7 +122,11 @@ impl Course {
     pub fn addresses(&self) -> Vec<String> {
         self.units
             .iter()
-            .flat_map(|u| u.lessons.iter().map(move |l| format!("{}/{}", u.slug, l.slug)))
+            .flat_map(|u| {
+                u.lessons
+                    .iter()
+                    .map(move |l| format!("{}/{}", u.slug, l.slug))
+            })
             .collect()
     }
 

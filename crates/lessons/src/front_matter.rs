@@ -107,7 +107,9 @@ pub(crate) fn split(
                 return Err(LessonError::new(
                     file,
                     line_no,
-                    format!("unknown front-matter key `{other}` (expected title, minutes or objectives)"),
+                    format!(
+                        "unknown front-matter key `{other}` (expected title, minutes or objectives)"
+                    ),
                 ));
             }
         }
@@ -120,11 +122,19 @@ pub(crate) fn split(
         ));
     };
     if !seen_title {
-        return Err(LessonError::new(file, close_line, "the front-matter has no `title`"));
+        return Err(LessonError::new(
+            file,
+            close_line,
+            "the front-matter has no `title`",
+        ));
     }
     if required == Required::Lesson {
         if !seen_minutes {
-            return Err(LessonError::new(file, close_line, "the front-matter has no `minutes`"));
+            return Err(LessonError::new(
+                file,
+                close_line,
+                "the front-matter has no `minutes`",
+            ));
         }
         if fm.objectives.is_empty() {
             return Err(LessonError::new(

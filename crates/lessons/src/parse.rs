@@ -3,8 +3,7 @@
 use std::ops::Range;
 
 use pulldown_cmark::{
-    Alignment, CodeBlockKind, CowStr, Event, HeadingLevel, Options, Parser as Markdown, Tag,
-    TagEnd,
+    Alignment, CodeBlockKind, CowStr, Event, HeadingLevel, Options, Parser as Markdown, Tag, TagEnd,
 };
 
 use crate::document::{Align, Block, Inline, Span, TextStyle, WidgetSpec};
@@ -47,8 +46,9 @@ fn options() -> Options {
 
 /// Parse Markdown that starts on file line `first_line`.
 fn parse_body(file: &str, body: &str, first_line: usize) -> Result<Vec<Block>, LessonError> {
-    let events: Vec<(Event<'_>, Range<usize>)> =
-        Markdown::new_ext(body, options()).into_offset_iter().collect();
+    let events: Vec<(Event<'_>, Range<usize>)> = Markdown::new_ext(body, options())
+        .into_offset_iter()
+        .collect();
     let line_starts = std::iter::once(0)
         .chain(body.match_indices('\n').map(|(i, _)| i + 1))
         .collect();
@@ -261,7 +261,8 @@ impl<'src> BodyParser<'_, 'src> {
         let mut links: Vec<String> = Vec::new();
         let mut depth = 0u32;
         while let Some((event, range)) = self.peek().cloned() {
-            if !is_inline_event(&event) && !(depth > 0 && matches!(event, Event::End(_))) {
+            let closes_inline_tag = depth > 0 && matches!(event, Event::End(_));
+            if !(is_inline_event(&event) || closes_inline_tag) {
                 break;
             }
             self.pos += 1;
@@ -357,7 +358,13 @@ impl<'src> BodyParser<'_, 'src> {
             match event {
                 Event::Start(Tag::TableHead) => header = self.table_row()?,
                 Event::Start(Tag::TableRow) => rows.push(self.table_row()?),
-                Event::End(TagEnd::Table) => return Ok(Block::Table { align, header, rows }),
+                Event::End(TagEnd::Table) => {
+                    return Ok(Block::Table {
+                        align,
+                        header,
+                        rows,
+                    });
+                }
                 _ => return Err(self.error(range.start, "unexpected content in a table")),
             }
         }
@@ -396,7 +403,9 @@ impl<'src> BodyParser<'_, 'src> {
             return Err(LessonError::new(
                 self.file,
                 first_line,
-                format!("`{name}` is not a widget name: the first line is the name alone, parameters follow as `key: value`"),
+                format!(
+                    "`{name}` is not a widget name: the first line is the name alone, parameters follow as `key: value`"
+                ),
             ));
         }
         let mut params = Vec::new();
@@ -405,7 +414,10 @@ impl<'src> BodyParser<'_, 'src> {
                 return Err(LessonError::new(
                     self.file,
                     first_line + offset,
-                    format!("expected a widget parameter `key: value`, found `{}`", line.trim()),
+                    format!(
+                        "expected a widget parameter `key: value`, found `{}`",
+                        line.trim()
+                    ),
                 ));
             };
             params.push((key.trim().to_owned(), value.trim().to_owned()));
@@ -421,8 +433,13 @@ impl<'src> BodyParser<'_, 'src> {
         let file = self.file;
         let fence = first_line - 1;
         let raw = quiz::read_raw(file, text, first_line)?;
-        let missing = |what: &str| LessonError::new(file, fence, format!("the quiz has no `{what}`"));
-        let question = parse_inline(file, fence, &raw.question.ok_or_else(|| missing("question"))?)?;
+        let missing =
+            |what: &str| LessonError::new(file, fence, format!("the quiz has no `{what}`"));
+        let question = parse_inline(
+            file,
+            fence,
+            &raw.question.ok_or_else(|| missing("question"))?,
+        )?;
         let explain = parse_inline(file, fence, &raw.explain.ok_or_else(|| missing("explain"))?)?;
         let kind_name = raw.kind.ok_or_else(|| missing("kind"))?;
         let options = raw
@@ -435,28 +452,45 @@ impl<'src> BodyParser<'_, 'src> {
         let kind = match kind_name.as_str() {
             "single" | "multiple" => {
                 if options.len() < 2 {
-                    return Err(LessonError::new(file, fence, "a choice quiz needs at least two options"));
+                    return Err(LessonError::new(
+                        file,
+                        fence,
+                        "a choice quiz needs at least two options",
+                    ));
                 }
                 if kind_name == "single" {
                     if right_count != 1 {
                         return Err(LessonError::new(
                             file,
                             fence,
-                            format!("a single-choice quiz needs exactly one `- [x]` option, found {right_count}"),
+                            format!(
+                                "a single-choice quiz needs exactly one `- [x]` option, found {right_count}"
+                            ),
                         ));
                     }
                     let correct = marks.iter().position(|r| *r).unwrap_or(0);
                     QuizKind::Single { options, correct }
                 } else {
                     if right_count == 0 {
-                        return Err(LessonError::new(file, fence, "a multiple-choice quiz needs at least one `- [x]` option"));
+                        return Err(LessonError::new(
+                            file,
+                            fence,
+                            "a multiple-choice quiz needs at least one `- [x]` option",
+                        ));
                     }
-                    QuizKind::Multiple { options, correct: marks }
+                    QuizKind::Multiple {
+                        options,
+                        correct: marks,
+                    }
                 }
             }
             "numeric" => {
                 if !options.is_empty() {
-                    return Err(LessonError::new(file, fence, "a numeric quiz has no options"));
+                    return Err(LessonError::new(
+                        file,
+                        fence,
+                        "a numeric quiz has no options",
+                    ));
                 }
                 let (answer, line) = raw.answer.ok_or_else(|| missing("answer"))?;
                 let answer = parse_number(file, line, "answer", &answer)?;
@@ -464,7 +498,11 @@ impl<'src> BodyParser<'_, 'src> {
                     Some((t, line)) => {
                         let t = parse_number(file, line, "tolerance", &t)?;
                         if t < 0.0 {
-                            return Err(LessonError::new(file, line, "`tolerance` must not be negative"));
+                            return Err(LessonError::new(
+                                file,
+                                line,
+                                "`tolerance` must not be negative",
+                            ));
                         }
                         t
                     }
@@ -493,10 +531,17 @@ impl<'src> BodyParser<'_, 'src> {
 }
 
 fn parse_number(file: &str, line: usize, key: &str, text: &str) -> Result<f64, LessonError> {
-    let cleaned: String = text.chars().filter(|c| !c.is_whitespace() && *c != '_').collect();
+    let cleaned: String = text
+        .chars()
+        .filter(|c| !c.is_whitespace() && *c != '_')
+        .collect();
     match cleaned.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(LessonError::new(file, line, format!("`{key}` must be a finite number, found `{text}`"))),
+        _ => Err(LessonError::new(
+            file,
+            line,
+            format!("`{key}` must be a finite number, found `{text}`"),
+        )),
     }
 }
 
@@ -513,11 +558,14 @@ fn heading_level(level: HeadingLevel) -> u8 {
 
 /// Append text, merging with the previous span when the style is the same.
 fn push_text(spans: &mut Inline, text: &str, style: &TextStyle) {
-    if let Some(Span::Text { text: prev, style: prev_style }) = spans.last_mut() {
-        if prev_style == style {
-            prev.push_str(text);
-            return;
-        }
+    if let Some(Span::Text {
+        text: prev,
+        style: prev_style,
+    }) = spans.last_mut()
+        && prev_style == style
+    {
+        prev.push_str(text);
+        return;
     }
     spans.push(Span::Text {
         text: text.to_owned(),

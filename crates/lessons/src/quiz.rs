@@ -18,7 +18,10 @@ pub struct Quiz {
 #[derive(Debug, Clone, PartialEq)]
 pub enum QuizKind {
     /// Pick the one right option.
-    Single { options: Vec<Inline>, correct: usize },
+    Single {
+        options: Vec<Inline>,
+        correct: usize,
+    },
     /// Tick every right option (and none of the wrong ones).
     Multiple {
         options: Vec<Inline>,

@@ -1,11 +1,11 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
 //! The lesson format: front-matter, blocks, widgets, quizzes, and the
 //! errors malformed files give.
 
-use kinolab_lessons::{
-    Answer, AnswerError, Block, Course, QuizKind, Span, parse_lesson,
-};
+use kinolab_lessons::{Answer, AnswerError, Block, Course, QuizKind, Span, parse_lesson};
 
-const HEADER: &str = "---\ntitle: Test lesson\nminutes: 7\nobjectives:\n  - First aim\n  - Second aim\n---\n";
+const HEADER: &str =
+    "---\ntitle: Test lesson\nminutes: 7\nobjectives:\n  - First aim\n  - Second aim\n---\n";
 
 fn lesson(body: &str) -> Vec<Block> {
     match parse_lesson("test.md", &format!("{HEADER}{body}")) {
@@ -33,10 +33,17 @@ fn front_matter_fields_are_read() {
 #[test]
 fn headings_paragraphs_and_emphasis() {
     let blocks = lesson("## Wheels\n\nA *steered* wheel and a **fixed** one.\n");
-    let Block::Heading { level, text } = &blocks[0] else { panic!("{blocks:?}") };
+    let Block::Heading { level, text } = &blocks[0] else {
+        panic!("{blocks:?}")
+    };
     assert_eq!(*level, 2);
-    assert_eq!(kinolab_lessons::parse_inline("x", 1, "Wheels").unwrap(), *text);
-    let Block::Paragraph(spans) = &blocks[1] else { panic!() };
+    assert_eq!(
+        kinolab_lessons::parse_inline("x", 1, "Wheels").unwrap(),
+        *text
+    );
+    let Block::Paragraph(spans) = &blocks[1] else {
+        panic!()
+    };
     let styled: Vec<(String, bool, bool)> = spans
         .iter()
         .filter_map(|s| match s {
@@ -61,26 +68,49 @@ fn lists_tables_code_links_and_images() {
     let blocks = lesson(
         "1. one\n2. two\n\n| a | b |\n|:--|--:|\n| 1 | 2 |\n\n```rust\nlet x = 1;\n```\n\nSee [the sheet](https://example.org) and ![a wheel](wheel.png).\n",
     );
-    let Block::List { start, items } = &blocks[0] else { panic!("{blocks:?}") };
+    let Block::List { start, items } = &blocks[0] else {
+        panic!("{blocks:?}")
+    };
     assert_eq!(*start, Some(1));
     assert_eq!(items.len(), 2);
-    let Block::Table { header, rows, align } = &blocks[1] else { panic!() };
+    let Block::Table {
+        header,
+        rows,
+        align,
+    } = &blocks[1]
+    else {
+        panic!()
+    };
     assert_eq!(header.len(), 2);
     assert_eq!(rows.len(), 1);
-    assert_eq!(align, &vec![kinolab_lessons::Align::Left, kinolab_lessons::Align::Right]);
+    assert_eq!(
+        align,
+        &vec![kinolab_lessons::Align::Left, kinolab_lessons::Align::Right]
+    );
     assert_eq!(
         blocks[2],
-        Block::Code { lang: "rust".into(), text: "let x = 1;\n".into() }
+        Block::Code {
+            lang: "rust".into(),
+            text: "let x = 1;\n".into()
+        }
     );
-    let Block::Paragraph(spans) = &blocks[3] else { panic!() };
+    let Block::Paragraph(spans) = &blocks[3] else {
+        panic!()
+    };
     assert!(spans.iter().any(|s| matches!(s, Span::Text { text, style } if text == "the sheet" && style.link.as_deref() == Some("https://example.org"))));
-    assert!(spans.iter().any(|s| matches!(s, Span::Image { url, alt } if url == "wheel.png" && alt == "a wheel")));
+    assert!(
+        spans.iter().any(
+            |s| matches!(s, Span::Image { url, alt } if url == "wheel.png" && alt == "a wheel")
+        )
+    );
 }
 
 #[test]
 fn formulas_inline_and_display() {
     let blocks = lesson("Speed $v = r\\dot\\varphi$ here.\n\n$$\\frac{a}{b}$$\n");
-    let Block::Paragraph(spans) = &blocks[0] else { panic!("{blocks:?}") };
+    let Block::Paragraph(spans) = &blocks[0] else {
+        panic!("{blocks:?}")
+    };
     assert!(matches!(spans[1], Span::Math(_)));
     assert!(matches!(blocks[1], Block::Math(_)), "{:?}", blocks[1]);
 }
@@ -88,7 +118,9 @@ fn formulas_inline_and_display() {
 #[test]
 fn widget_block_names_a_widget_with_parameters() {
     let blocks = lesson("Text.\n\n```widget\nsupport-polygon\nlegs: 4\nshow margin: yes\n```\n");
-    let Block::Widget(w) = &blocks[1] else { panic!("{blocks:?}") };
+    let Block::Widget(w) = &blocks[1] else {
+        panic!("{blocks:?}")
+    };
     assert_eq!(w.name, "support-polygon");
     assert_eq!(w.param("legs"), Some("4"));
     assert_eq!(w.param("show margin"), Some("yes"));
@@ -98,8 +130,12 @@ fn widget_block_names_a_widget_with_parameters() {
 
 #[test]
 fn single_choice_quiz_is_checked() {
-    let blocks = lesson("```quiz\nkind: single\nquestion: Which is *closed*?\n- [ ] A street\n- [x] A fenced cell\nexplain: Nothing moves unless planned.\n```\n");
-    let Block::Quiz(q) = &blocks[0] else { panic!("{blocks:?}") };
+    let blocks = lesson(
+        "```quiz\nkind: single\nquestion: Which is *closed*?\n- [ ] A street\n- [x] A fenced cell\nexplain: Nothing moves unless planned.\n```\n",
+    );
+    let Block::Quiz(q) = &blocks[0] else {
+        panic!("{blocks:?}")
+    };
     assert_eq!(q.options().len(), 2);
     assert_eq!(q.check(&Answer::Single(1)), Ok(true));
     assert_eq!(q.check(&Answer::Single(0)), Ok(false));
@@ -109,25 +145,48 @@ fn single_choice_quiz_is_checked() {
 
 #[test]
 fn multiple_choice_needs_every_right_tick() {
-    let blocks = lesson("```quiz\nkind: multiple\nquestion: Pick the legged ones.\n- [x] Hexapod\n- [ ] Car\n- [x] Biped\nexplain: Legs.\n```\n");
+    let blocks = lesson(
+        "```quiz\nkind: multiple\nquestion: Pick the legged ones.\n- [x] Hexapod\n- [ ] Car\n- [x] Biped\nexplain: Legs.\n```\n",
+    );
     let Block::Quiz(q) = &blocks[0] else { panic!() };
-    assert_eq!(q.check(&Answer::Multiple(vec![true, false, true])), Ok(true));
-    assert_eq!(q.check(&Answer::Multiple(vec![true, false, false])), Ok(false));
-    assert_eq!(q.check(&Answer::Multiple(vec![true, true, true])), Ok(false));
-    assert_eq!(q.check(&Answer::Multiple(vec![true])), Err(AnswerError::OutOfRange));
+    assert_eq!(
+        q.check(&Answer::Multiple(vec![true, false, true])),
+        Ok(true)
+    );
+    assert_eq!(
+        q.check(&Answer::Multiple(vec![true, false, false])),
+        Ok(false)
+    );
+    assert_eq!(
+        q.check(&Answer::Multiple(vec![true, true, true])),
+        Ok(false)
+    );
+    assert_eq!(
+        q.check(&Answer::Multiple(vec![true])),
+        Err(AnswerError::OutOfRange)
+    );
 }
 
 #[test]
 fn numeric_quiz_uses_the_tolerance() {
-    let blocks = lesson("```quiz\nkind: numeric\nquestion: How many events for $k = 3$?\nanswer: 120\ntolerance: 0.5\nunit: events\nexplain: $5! = 120$.\n```\n");
+    let blocks = lesson(
+        "```quiz\nkind: numeric\nquestion: How many events for $k = 3$?\nanswer: 120\ntolerance: 0.5\nunit: events\nexplain: $5! = 120$.\n```\n",
+    );
     let Block::Quiz(q) = &blocks[0] else { panic!() };
     assert_eq!(
         q.kind,
-        QuizKind::Numeric { answer: 120.0, tolerance: 0.5, unit: Some("events".into()) }
+        QuizKind::Numeric {
+            answer: 120.0,
+            tolerance: 0.5,
+            unit: Some("events".into())
+        }
     );
     assert_eq!(q.check(&Answer::Numeric(120.4)), Ok(true));
     assert_eq!(q.check(&Answer::Numeric(120.6)), Ok(false));
-    assert_eq!(q.check(&Answer::Numeric(f64::NAN)), Err(AnswerError::NotFinite));
+    assert_eq!(
+        q.check(&Answer::Numeric(f64::NAN)),
+        Err(AnswerError::NotFinite)
+    );
 }
 
 #[test]
@@ -149,7 +208,8 @@ fn unclosed_block_names_file_and_line() {
 
 #[test]
 fn unknown_quiz_kind_names_file_and_line() {
-    let source = format!("{HEADER}\n```quiz\nkind: essay\nquestion: Why?\nexplain: Because.\n```\n");
+    let source =
+        format!("{HEADER}\n```quiz\nkind: essay\nquestion: Why?\nexplain: Because.\n```\n");
     assert_eq!(
         error(&source),
         "bad.md:9: unknown quiz kind `essay` (expected single, multiple or numeric)"
@@ -158,12 +218,20 @@ fn unknown_quiz_kind_names_file_and_line() {
 
 #[test]
 fn quiz_mistakes_are_reported() {
-    let two_right = format!("{HEADER}```quiz\nkind: single\nquestion: q\n- [x] a\n- [x] b\nexplain: e\n```\n");
-    assert_eq!(error(&two_right), "bad.md:8: a single-choice quiz needs exactly one `- [x]` option, found 2");
+    let two_right =
+        format!("{HEADER}```quiz\nkind: single\nquestion: q\n- [x] a\n- [x] b\nexplain: e\n```\n");
+    assert_eq!(
+        error(&two_right),
+        "bad.md:8: a single-choice quiz needs exactly one `- [x]` option, found 2"
+    );
     let no_answer = format!("{HEADER}```quiz\nkind: numeric\nquestion: q\nexplain: e\n```\n");
     assert_eq!(error(&no_answer), "bad.md:8: the quiz has no `answer`");
-    let bad_number = format!("{HEADER}```quiz\nkind: numeric\nquestion: q\nanswer: lots\nexplain: e\n```\n");
-    assert_eq!(error(&bad_number), "bad.md:11: `answer` must be a finite number, found `lots`");
+    let bad_number =
+        format!("{HEADER}```quiz\nkind: numeric\nquestion: q\nanswer: lots\nexplain: e\n```\n");
+    assert_eq!(
+        error(&bad_number),
+        "bad.md:11: `answer` must be a finite number, found `lots`"
+    );
     let stray = format!("{HEADER}```quiz\nkind: single\nwhat is this\n```\n");
     assert_eq!(
         error(&stray),
@@ -198,10 +266,16 @@ fn bad_front_matter_names_file_and_line() {
 #[test]
 fn bad_widget_and_formula_name_the_line() {
     let no_name = format!("{HEADER}```widget\n\n```\n");
-    assert_eq!(error(&no_name), "bad.md:9: a widget block needs the widget's name on its first line");
+    assert_eq!(
+        error(&no_name),
+        "bad.md:9: a widget block needs the widget's name on its first line"
+    );
     let bad_math = format!("{HEADER}Text\n\nMore $\\frac{{a}}$ here.\n");
     let message = error(&bad_math);
-    assert!(message.starts_with("bad.md:10: in formula `\\frac{a}`"), "{message}");
+    assert!(
+        message.starts_with("bad.md:10: in formula `\\frac{a}`"),
+        "{message}"
+    );
 }
 
 #[test]
@@ -220,7 +294,10 @@ fn course_orders_units_and_lessons_and_finds_neighbours() {
     assert_eq!(course.addresses(), vec!["first/a", "first/b", "second/c"]);
     assert!(course.lesson("first/b").is_some());
     assert!(course.lesson("first/zzz").is_none());
-    assert_eq!(course.neighbours("first/b"), (Some("first/a".into()), Some("second/c".into())));
+    assert_eq!(
+        course.neighbours("first/b"),
+        (Some("first/a".into()), Some("second/c".into()))
+    );
     assert_eq!(course.neighbours("first/a").0, None);
 }
 
@@ -228,7 +305,10 @@ fn course_orders_units_and_lessons_and_finds_neighbours() {
 fn a_unit_without_unit_md_is_an_error() {
     let l1 = format!("{HEADER}One.\n");
     let err = Course::from_files([("01-first/01-a.md", l1.as_str())]).unwrap_err();
-    assert_eq!(err.to_string(), "first:1: this unit folder has no unit.md with a title");
+    assert_eq!(
+        err.to_string(),
+        "first:1: this unit folder has no unit.md with a title"
+    );
 }
 
 #[test]
@@ -236,7 +316,11 @@ fn every_bundled_lesson_parses_and_has_a_quiz() {
     let course = kinolab_lessons::bundled::course().unwrap_or_else(|e| panic!("{e}"));
     assert!(!course.units.is_empty());
     for unit in &course.units {
-        assert!(!unit.lessons.is_empty(), "unit {} has no lessons", unit.slug);
+        assert!(
+            !unit.lessons.is_empty(),
+            "unit {} has no lessons",
+            unit.slug
+        );
         for lesson in &unit.lessons {
             assert!(
                 lesson.blocks.iter().any(|b| matches!(b, Block::Quiz(_))),

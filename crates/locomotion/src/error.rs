@@ -9,7 +9,10 @@ pub struct LocomotionError {
 
 impl LocomotionError {
     pub(crate) fn new(field: &'static str, message: impl Into<String>) -> Self {
-        Self { field, message: message.into() }
+        Self {
+            field,
+            message: message.into(),
+        }
     }
 
     /// An error for a value that must be finite and positive.
@@ -17,7 +20,10 @@ impl LocomotionError {
         if value.is_finite() && value > 0.0 {
             Ok(value)
         } else {
-            Err(Self::new(field, format!("must be a finite number above 0, got {value}")))
+            Err(Self::new(
+                field,
+                format!("must be a finite number above 0, got {value}"),
+            ))
         }
     }
 }

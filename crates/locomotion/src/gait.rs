@@ -13,7 +13,10 @@ pub const MAX_LEGS_EXACT: u32 = 17;
 /// `N = (2k − 1)!`, exactly.
 pub fn leg_events(legs: u32) -> Result<u128, LocomotionError> {
     if legs == 0 {
-        return Err(LocomotionError::new("legs", "a walker needs at least one leg"));
+        return Err(LocomotionError::new(
+            "legs",
+            "a walker needs at least one leg",
+        ));
     }
     if legs > MAX_LEGS_EXACT {
         return Err(LocomotionError::new(
@@ -28,7 +31,10 @@ pub fn leg_events(legs: u32) -> Result<u128, LocomotionError> {
 /// exceeds `f64::MAX`, from 86 legs on).
 pub fn leg_events_f64(legs: u32) -> Result<f64, LocomotionError> {
     if legs == 0 {
-        return Err(LocomotionError::new("legs", "a walker needs at least one leg"));
+        return Err(LocomotionError::new(
+            "legs",
+            "a walker needs at least one leg",
+        ));
     }
     Ok((1..=2 * u64::from(legs) - 1).map(|i| i as f64).product())
 }

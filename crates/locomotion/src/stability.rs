@@ -30,7 +30,10 @@ fn check_point(field: &'static str, p: Point) -> Result<(), LocomotionError> {
     if p.iter().all(|c| c.is_finite()) {
         Ok(())
     } else {
-        Err(LocomotionError::new(field, format!("coordinates must be finite, got {p:?}")))
+        Err(LocomotionError::new(
+            field,
+            format!("coordinates must be finite, got {p:?}"),
+        ))
     }
 }
 
@@ -50,10 +53,15 @@ pub(crate) fn convex_hull(points: &[Point]) -> Vec<Point> {
         return sorted;
     }
     let mut hull: Vec<Point> = Vec::with_capacity(2 * sorted.len());
-    for pass in [&sorted[..], &sorted.iter().rev().copied().collect::<Vec<_>>()[..]] {
+    for pass in [
+        &sorted[..],
+        &sorted.iter().rev().copied().collect::<Vec<_>>()[..],
+    ] {
         let start = hull.len();
         for &p in pass {
-            while hull.len() >= start + 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
                 hull.pop();
             }
             hull.push(p);
@@ -119,9 +127,19 @@ mod tests {
 
     #[test]
     fn hull_drops_inner_and_collinear_points() {
-        let hull = convex_hull(&[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]);
+        let hull = convex_hull(&[
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [1.0, 0.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
+            [1.0, 1.0],
+        ]);
         assert_eq!(hull, vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]);
         assert_eq!(convex_hull(&[[1.0, 1.0], [1.0, 1.0]]), vec![[1.0, 1.0]]);
-        assert_eq!(convex_hull(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]), vec![[0.0, 0.0], [2.0, 2.0]]);
+        assert_eq!(
+            convex_hull(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]),
+            vec![[0.0, 0.0], [2.0, 2.0]]
+        );
     }
 }

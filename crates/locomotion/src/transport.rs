@@ -16,7 +16,10 @@ pub fn cost_of_transport(
     gravity: f64,
 ) -> Result<f64, LocomotionError> {
     if !(energy.is_finite() && energy >= 0.0) {
-        return Err(LocomotionError::new("energy", format!("must be a finite number ≥ 0, got {energy}")));
+        return Err(LocomotionError::new(
+            "energy",
+            format!("must be a finite number ≥ 0, got {energy}"),
+        ));
     }
     let mass = LocomotionError::check_positive("mass", mass)?;
     let distance = LocomotionError::check_positive("distance", distance)?;

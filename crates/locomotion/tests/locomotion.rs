@@ -1,3 +1,4 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
 use kinolab_locomotion::{
     MAX_LEGS_EXACT, STANDARD_GRAVITY, cost_of_transport, leg_events, leg_events_f64,
     static_stability,
@@ -11,13 +12,19 @@ fn leg_event_counts_match_the_reference_sheet() {
     assert_eq!(leg_events(3).unwrap(), 120);
     assert_eq!(leg_events(4).unwrap(), 5040);
     assert_eq!(leg_events(6).unwrap(), 39_916_800);
-    assert_eq!(leg_events(MAX_LEGS_EXACT).unwrap(), 8_683_317_618_811_886_495_518_194_401_280_000_000);
+    assert_eq!(
+        leg_events(MAX_LEGS_EXACT).unwrap(),
+        8_683_317_618_811_886_495_518_194_401_280_000_000
+    );
     assert_eq!(leg_events_f64(6).unwrap(), 39_916_800.0);
 }
 
 #[test]
 fn bad_leg_counts_name_the_field() {
-    assert_eq!(leg_events(0).unwrap_err().to_string(), "legs: a walker needs at least one leg");
+    assert_eq!(
+        leg_events(0).unwrap_err().to_string(),
+        "legs: a walker needs at least one leg"
+    );
     assert_eq!(leg_events(MAX_LEGS_EXACT + 1).unwrap_err().field, "legs");
     assert_eq!(leg_events_f64(0).unwrap_err().field, "legs");
     assert!(leg_events_f64(100).unwrap().is_infinite());
@@ -32,7 +39,9 @@ fn square_stance_has_margin_to_the_nearest_edge() {
     assert_eq!(s.polygon.len(), 4);
     let off_centre = static_stability([0.5, 0.2], &feet).unwrap();
     assert!((off_centre.margin - 0.5).abs() < 1e-12);
-    assert!((off_centre.nearest[0] - 1.0).abs() < 1e-12 && (off_centre.nearest[1] - 0.2).abs() < 1e-12);
+    assert!(
+        (off_centre.nearest[0] - 1.0).abs() < 1e-12 && (off_centre.nearest[1] - 0.2).abs() < 1e-12
+    );
 }
 
 #[test]
@@ -71,8 +80,18 @@ fn feet_in_a_line_or_one_foot_are_never_statically_stable() {
 #[test]
 fn bad_stances_are_errors() {
     assert_eq!(static_stability([0.0, 0.0], &[]).unwrap_err().field, "feet");
-    assert_eq!(static_stability([f64::NAN, 0.0], &[[0.0, 0.0]]).unwrap_err().field, "com");
-    assert_eq!(static_stability([0.0, 0.0], &[[f64::INFINITY, 0.0]]).unwrap_err().field, "feet");
+    assert_eq!(
+        static_stability([f64::NAN, 0.0], &[[0.0, 0.0]])
+            .unwrap_err()
+            .field,
+        "com"
+    );
+    assert_eq!(
+        static_stability([0.0, 0.0], &[[f64::INFINITY, 0.0]])
+            .unwrap_err()
+            .field,
+        "feet"
+    );
 }
 
 #[test]
@@ -80,16 +99,31 @@ fn cost_of_transport_is_energy_per_weight_and_distance() {
     assert!((cost_of_transport(100.0, 10.0, 10.0, 10.0).unwrap() - 0.1).abs() < 1e-15);
     let walking = cost_of_transport(2_000.0, 80.0, 1_000.0, STANDARD_GRAVITY).unwrap();
     assert!((walking - 2_000.0 / (80.0 * 9.806_65 * 1_000.0)).abs() < 1e-15);
-    assert_eq!(cost_of_transport(1.0, 0.0, 1.0, 9.8).unwrap_err().field, "mass");
-    assert_eq!(cost_of_transport(1.0, 1.0, -1.0, 9.8).unwrap_err().field, "distance");
-    assert_eq!(cost_of_transport(f64::NAN, 1.0, 1.0, 9.8).unwrap_err().field, "energy");
+    assert_eq!(
+        cost_of_transport(1.0, 0.0, 1.0, 9.8).unwrap_err().field,
+        "mass"
+    );
+    assert_eq!(
+        cost_of_transport(1.0, 1.0, -1.0, 9.8).unwrap_err().field,
+        "distance"
+    );
+    assert_eq!(
+        cost_of_transport(f64::NAN, 1.0, 1.0, 9.8)
+            .unwrap_err()
+            .field,
+        "energy"
+    );
 }
 
 /// Distance from `p` to segment `a`–`b`, by hand, to check parry's answer.
 fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let len2 = dx * dx + dy * dy;
-    let t = if len2 == 0.0 { 0.0 } else { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0) };
+    let t = if len2 == 0.0 {
+        0.0
+    } else {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    };
     let (qx, qy) = (a[0] + t * dx, a[1] + t * dy);
     ((p[0] - qx).powi(2) + (p[1] - qy).powi(2)).sqrt()
 }

@@ -23,7 +23,8 @@ impl LabWidget for LegEvents {
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             let label = ui.label("Number of legs k:");
-            ui.add(egui::Slider::new(&mut self.legs, 1..=MAX_LEGS)).labelled_by(label.id);
+            ui.add(egui::Slider::new(&mut self.legs, 1..=MAX_LEGS))
+                .labelled_by(label.id);
         });
         let count = leg_events(self.legs).unwrap_or(0);
         ui.label(
@@ -61,17 +62,40 @@ impl LegEvents {
             let log = (leg_events(k).unwrap_or(1) as f64).log10() as f32;
             let h = (log / max_log) * rect.height();
             let x = rect.left() + (k - 1) as f32 * bar_w;
-            let bar = egui::Rect::from_min_max(pos2(x + 3.0, rect.bottom() - h.max(1.0)), pos2(x + bar_w - 3.0, rect.bottom()));
-            let color = if k == self.legs { theme::accent(ui) } else { ui.visuals().widgets.inactive.bg_fill };
+            let bar = egui::Rect::from_min_max(
+                pos2(x + 3.0, rect.bottom() - h.max(1.0)),
+                pos2(x + bar_w - 3.0, rect.bottom()),
+            );
+            let color = if k == self.legs {
+                theme::accent(ui)
+            } else {
+                ui.visuals().widgets.inactive.bg_fill
+            };
             painter.rect_filled(bar, 2.0, color);
-            painter.text(pos2(bar.center().x, rect.bottom() + 2.0), egui::Align2::CENTER_TOP, k.to_string(), egui::FontId::proportional(11.0), text);
+            painter.text(
+                pos2(bar.center().x, rect.bottom() + 2.0),
+                egui::Align2::CENTER_TOP,
+                k.to_string(),
+                egui::FontId::proportional(11.0),
+                text,
+            );
         }
-        painter.line_segment([rect.left_bottom(), rect.right_bottom()], Stroke::new(1.0, text));
-        painter.text(rect.left_top() - vec2(26.0, 14.0), egui::Align2::LEFT_TOP, "log₁₀ N  (each step up is ×10)", egui::FontId::proportional(11.0), Color32::GRAY);
-        if let Some(pos) = response.interact_pointer_pos() {
-            if response.clicked() && rect.x_range().contains(pos.x) {
-                self.legs = (((pos.x - rect.left()) / bar_w) as u32 + 1).clamp(1, MAX_LEGS);
-            }
+        painter.line_segment(
+            [rect.left_bottom(), rect.right_bottom()],
+            Stroke::new(1.0, text),
+        );
+        painter.text(
+            rect.left_top() - vec2(26.0, 14.0),
+            egui::Align2::LEFT_TOP,
+            "log₁₀ N  (each step up is ×10)",
+            egui::FontId::proportional(11.0),
+            Color32::GRAY,
+        );
+        if let Some(pos) = response.interact_pointer_pos()
+            && response.clicked()
+            && rect.x_range().contains(pos.x)
+        {
+            self.legs = (((pos.x - rect.left()) / bar_w) as u32 + 1).clamp(1, MAX_LEGS);
         }
     }
 }

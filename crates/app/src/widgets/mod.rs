@@ -19,9 +19,21 @@ type Constructor = fn(&WidgetSpec) -> Result<Box<dyn LabWidget>, String>;
 
 /// Every widget a lesson can name: name, constructor, one-line description.
 pub const REGISTRY: &[(&str, Constructor, &str)] = &[
-    ("leg-events", leg_events::create, "how many leg-event sequences a walker with k legs has"),
-    ("support-polygon", support_polygon::create, "drag feet and the centre of mass; see static stability"),
-    ("scripted-vs-sensing", scripted_vs_sensing::create, "a pick-and-place cell in a closed and an open world"),
+    (
+        "leg-events",
+        leg_events::create,
+        "how many leg-event sequences a walker with k legs has",
+    ),
+    (
+        "support-polygon",
+        support_polygon::create,
+        "drag feet and the centre of mass; see static stability",
+    ),
+    (
+        "scripted-vs-sensing",
+        scripted_vs_sensing::create,
+        "a pick-and-place cell in a closed and an open world",
+    ),
 ];
 
 /// Make the widget a lesson block names, or say why not.
@@ -79,7 +91,7 @@ pub(crate) fn group_digits(n: u128) -> String {
     let digits = n.to_string();
     let mut out = String::new();
     for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
             out.push('\u{2009}');
         }
         out.push(c);
@@ -94,7 +106,10 @@ mod tests {
     fn spec(name: &str, params: &[(&str, &str)]) -> WidgetSpec {
         WidgetSpec {
             name: name.into(),
-            params: params.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect(),
+            params: params
+                .iter()
+                .map(|(k, v)| (k.to_string(), v.to_string()))
+                .collect(),
             line: 12,
         }
     }
@@ -108,12 +123,24 @@ mod tests {
 
     #[test]
     fn unknown_names_and_bad_parameters_explain_themselves() {
-        let Err(message) = create(&spec("flux-capacitor", &[])) else { panic!() };
-        assert!(message.starts_with("There is no widget named `flux-capacitor` (lesson line 12)."), "{message}");
+        let Err(message) = create(&spec("flux-capacitor", &[])) else {
+            panic!()
+        };
+        assert!(
+            message.starts_with("There is no widget named `flux-capacitor` (lesson line 12)."),
+            "{message}"
+        );
         assert!(message.contains("support-polygon"));
-        let Err(message) = create(&spec("leg-events", &[("legs", "many")])) else { panic!() };
-        assert_eq!(message, "Parameter `legs` must be a number from 1 to 12, found `many`.");
-        let Err(message) = create(&spec("support-polygon", &[("colour", "red")])) else { panic!() };
+        let Err(message) = create(&spec("leg-events", &[("legs", "many")])) else {
+            panic!()
+        };
+        assert_eq!(
+            message,
+            "Parameter `legs` must be a number from 1 to 12, found `many`."
+        );
+        let Err(message) = create(&spec("support-polygon", &[("colour", "red")])) else {
+            panic!()
+        };
         assert!(message.contains("has no parameter `colour`"), "{message}");
     }
 

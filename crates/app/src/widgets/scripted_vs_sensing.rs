@@ -22,7 +22,7 @@ pub(super) fn create(spec: &WidgetSpec) -> Result<Box<dyn LabWidget>, String> {
     known_params(spec, &["gripper_tolerance"])?;
     let tolerance = number_param(spec, "gripper_tolerance", 0.01, 0.001..=0.05)?;
     Ok(Box::new(ScriptedVsSensing {
-        placement_mm: 0.0,
+        placement_mm: 15.0,
         sensor_mm: 2.0,
         tolerance_mm: tolerance * 1000.0,
         seed: 1,
@@ -33,16 +33,22 @@ impl LabWidget for ScriptedVsSensing {
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             let label = ui.label("How far parts stray from their spot (mm):");
-            ui.add(egui::Slider::new(&mut self.placement_mm, 0.0..=50.0).fixed_decimals(0)).labelled_by(label.id);
+            ui.add(egui::Slider::new(&mut self.placement_mm, 0.0..=50.0).fixed_decimals(0))
+                .labelled_by(label.id);
         });
         ui.horizontal_wrapped(|ui| {
             let label = ui.label("Sensing robot's measurement error (mm):");
-            ui.add(egui::Slider::new(&mut self.sensor_mm, 0.0..=30.0).fixed_decimals(0)).labelled_by(label.id);
+            ui.add(egui::Slider::new(&mut self.sensor_mm, 0.0..=30.0).fixed_decimals(0))
+                .labelled_by(label.id);
             if ui.button("New batch of parts").clicked() {
                 self.seed = self.seed.wrapping_add(1);
             }
         });
-        let cell = match PickCell::new(self.placement_mm / 1000.0, self.tolerance_mm / 1000.0, self.sensor_mm / 1000.0) {
+        let cell = match PickCell::new(
+            self.placement_mm / 1000.0,
+            self.tolerance_mm / 1000.0,
+            self.sensor_mm / 1000.0,
+        ) {
             Ok(cell) => cell,
             Err(e) => {
                 ui.label(e.to_string());
@@ -61,26 +67,53 @@ impl LabWidget for ScriptedVsSensing {
         let text = ui.visuals().text_color();
         // Both panels share one scale: the larger of the stray disc and 20 mm fits.
         let extent_mm = self.placement_mm.max(self.sensor_mm).max(20.0) as f32 * 1.15;
-        for (panel, title) in [(0, "Scripted robot: goes to the spot"), (1, "Sensing robot: goes where it sees the part")] {
+        for (panel, title) in [
+            (0, "Scripted robot: goes to the spot"),
+            (1, "Sensing robot: goes where it sees the part"),
+        ] {
             let area = egui::Rect::from_min_size(
                 response.rect.min + vec2(panel as f32 * half, 0.0),
                 vec2(half - 6.0, response.rect.height()),
             );
             painter.rect_filled(area, 6.0, ui.visuals().extreme_bg_color);
-            painter.text(area.center_top() + vec2(0.0, 6.0), egui::Align2::CENTER_TOP, title, egui::FontId::proportional(12.5), text);
+            painter.text(
+                area.center_top() + vec2(0.0, 6.0),
+                egui::Align2::CENTER_TOP,
+                title,
+                egui::FontId::proportional(12.5),
+                text,
+            );
             let centre = area.center() + vec2(0.0, 10.0);
             let scale = (area.height() - 40.0) / 2.0 / extent_mm;
             // The nominal spot and the gripper's reach around where it goes.
-            painter.line_segment([centre - vec2(6.0, 0.0), centre + vec2(6.0, 0.0)], Stroke::new(1.0, text));
-            painter.line_segment([centre - vec2(0.0, 6.0), centre + vec2(0.0, 6.0)], Stroke::new(1.0, text));
+            painter.line_segment(
+                [centre - vec2(6.0, 0.0), centre + vec2(6.0, 0.0)],
+                Stroke::new(1.0, text),
+            );
+            painter.line_segment(
+                [centre - vec2(0.0, 6.0), centre + vec2(0.0, 6.0)],
+                Stroke::new(1.0, text),
+            );
             if panel == 0 {
-                painter.circle_stroke(centre, self.tolerance_mm as f32 * scale, Stroke::new(1.5, theme::accent(ui)));
+                painter.circle_stroke(
+                    centre,
+                    self.tolerance_mm as f32 * scale,
+                    Stroke::new(1.5, theme::accent(ui)),
+                );
             }
             if self.placement_mm > 0.0 {
-                painter.circle_stroke(centre, self.placement_mm as f32 * scale, Stroke::new(1.0, text.gamma_multiply(0.3)));
+                painter.circle_stroke(
+                    centre,
+                    self.placement_mm as f32 * scale,
+                    Stroke::new(1.0, text.gamma_multiply(0.3)),
+                );
             }
             for t in &trials {
-                let ok = if panel == 0 { t.scripted_grasped } else { t.sensing_grasped };
+                let ok = if panel == 0 {
+                    t.scripted_grasped
+                } else {
+                    t.sensing_grasped
+                };
                 let at = centre + vec2(t.part[0] as f32, -t.part[1] as f32) * 1000.0 * scale;
                 painter.circle_filled(pos2(at.x, at.y), 4.0, if ok { good } else { bad });
             }

@@ -41,7 +41,11 @@ impl SupportPolygon {
                 }
             })
             .collect();
-        Self { legs, feet, com: [0.0, 0.0] }
+        Self {
+            legs,
+            feet,
+            com: [0.0, 0.0],
+        }
     }
 }
 
@@ -53,15 +57,24 @@ struct View {
 
 impl View {
     fn to_screen(&self, p: Point) -> Pos2 {
-        pos2(self.centre.x + p[0] as f32 * self.scale, self.centre.y - p[1] as f32 * self.scale)
+        pos2(
+            self.centre.x + p[0] as f32 * self.scale,
+            self.centre.y - p[1] as f32 * self.scale,
+        )
     }
 
     fn to_ground(&self, delta: egui::Vec2) -> Point {
-        [f64::from(delta.x / self.scale), f64::from(-delta.y / self.scale)]
+        [
+            f64::from(delta.x / self.scale),
+            f64::from(-delta.y / self.scale),
+        ]
     }
 
     fn clamp(p: Point) -> Point {
-        [p[0].clamp(-VIEW_HALF_WIDTH, VIEW_HALF_WIDTH), p[1].clamp(-VIEW_HALF_HEIGHT, VIEW_HALF_HEIGHT)]
+        [
+            p[0].clamp(-VIEW_HALF_WIDTH, VIEW_HALF_WIDTH),
+            p[1].clamp(-VIEW_HALF_HEIGHT, VIEW_HALF_HEIGHT),
+        ]
     }
 }
 
@@ -81,11 +94,17 @@ impl LabWidget for SupportPolygon {
         let rect = response.rect;
         let view = View {
             centre: rect.center(),
-            scale: (rect.width() / (2.0 * VIEW_HALF_WIDTH as f32)).min(rect.height() / (2.0 * VIEW_HALF_HEIGHT as f32)),
+            scale: (rect.width() / (2.0 * VIEW_HALF_WIDTH as f32))
+                .min(rect.height() / (2.0 * VIEW_HALF_HEIGHT as f32)),
         };
         painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
 
-        let grounded: Vec<Point> = self.feet.iter().filter(|f| f.on_ground).map(|f| f.at).collect();
+        let grounded: Vec<Point> = self
+            .feet
+            .iter()
+            .filter(|f| f.on_ground)
+            .map(|f| f.at)
+            .collect();
         let verdict = static_stability(self.com, &grounded);
         let text_color = ui.visuals().text_color();
         let good = theme::good_color(ui);
@@ -96,23 +115,48 @@ impl LabWidget for SupportPolygon {
             let color = if s.stable { good } else { bad };
             let corners: Vec<Pos2> = s.polygon.iter().map(|&p| view.to_screen(p)).collect();
             if corners.len() >= 3 {
-                painter.add(Shape::convex_polygon(corners, color.gamma_multiply(0.18), Stroke::new(2.0, color)));
+                painter.add(Shape::convex_polygon(
+                    corners,
+                    color.gamma_multiply(0.18),
+                    Stroke::new(2.0, color),
+                ));
             } else if corners.len() == 2 {
                 painter.line_segment([corners[0], corners[1]], Stroke::new(2.0, color));
             }
-            painter.line_segment([view.to_screen(self.com), view.to_screen(s.nearest)], Stroke::new(1.5, color));
+            painter.line_segment(
+                [view.to_screen(self.com), view.to_screen(s.nearest)],
+                Stroke::new(1.5, color),
+            );
         }
 
         // Body outline, for orientation: the front is to the right.
-        let body = egui::Rect::from_center_size(view.to_screen([0.0, 0.0]), vec2(0.36 * view.scale, 0.2 * view.scale));
-        painter.rect_stroke(body, 8.0, Stroke::new(1.0, text_color.gamma_multiply(0.4)), egui::StrokeKind::Middle);
-        painter.text(body.right_center() + vec2(6.0, 0.0), egui::Align2::LEFT_CENTER, "front →", egui::FontId::proportional(11.0), text_color.gamma_multiply(0.6));
+        let body = egui::Rect::from_center_size(
+            view.to_screen([0.0, 0.0]),
+            vec2(0.36 * view.scale, 0.2 * view.scale),
+        );
+        painter.rect_stroke(
+            body,
+            8.0,
+            Stroke::new(1.0, text_color.gamma_multiply(0.4)),
+            egui::StrokeKind::Middle,
+        );
+        painter.text(
+            rect.right_top() + vec2(-10.0, 10.0),
+            egui::Align2::RIGHT_TOP,
+            "seen from above, front to the right →",
+            egui::FontId::proportional(11.0),
+            text_color.gamma_multiply(0.6),
+        );
 
         // Feet: drag to move, click to lift or lower.
         let base_id = ui.scope_id().with("feet");
         for (i, foot) in self.feet.iter_mut().enumerate() {
             let at = view.to_screen(foot.at);
-            let state = if foot.on_ground { "on the ground" } else { "lifted" };
+            let state = if foot.on_ground {
+                "on the ground"
+            } else {
+                "lifted"
+            };
             let r = handle(ui, base_id.with(i), at, format!("Foot {} ({state})", i + 1));
             if r.dragged() {
                 let d = view.to_ground(r.drag_delta());
@@ -127,38 +171,83 @@ impl LabWidget for SupportPolygon {
                 painter.circle_stroke(at, 9.0, Stroke::new(2.0, text_color.gamma_multiply(0.5)));
                 painter.circle_stroke(at, 13.0, Stroke::new(1.0, text_color.gamma_multiply(0.3)));
             }
-            painter.text(at + vec2(0.0, -16.0), egui::Align2::CENTER_BOTTOM, (i + 1).to_string(), egui::FontId::proportional(12.0), text_color);
+            painter.text(
+                at + vec2(0.0, -16.0),
+                egui::Align2::CENTER_BOTTOM,
+                (i + 1).to_string(),
+                egui::FontId::proportional(12.0),
+                text_color,
+            );
         }
 
         // Centre of mass.
         let com_at = view.to_screen(self.com);
-        let r = handle(ui, ui.scope_id().with("com"), com_at, "Centre of mass".to_owned());
+        let r = handle(
+            ui,
+            ui.scope_id().with("com"),
+            com_at,
+            "Centre of mass".to_owned(),
+        );
         if r.dragged() {
             let d = view.to_ground(r.drag_delta());
             self.com = View::clamp([self.com[0] + d[0], self.com[1] + d[1]]);
         }
         let com_color = theme::accent(ui);
         painter.circle(com_at, 8.0, com_color, Stroke::new(1.5, Color32::WHITE));
-        painter.line_segment([com_at - vec2(5.0, 0.0), com_at + vec2(5.0, 0.0)], Stroke::new(1.5, Color32::WHITE));
-        painter.line_segment([com_at - vec2(0.0, 5.0), com_at + vec2(0.0, 5.0)], Stroke::new(1.5, Color32::WHITE));
+        painter.line_segment(
+            [com_at - vec2(5.0, 0.0), com_at + vec2(5.0, 0.0)],
+            Stroke::new(1.5, Color32::WHITE),
+        );
+        painter.line_segment(
+            [com_at - vec2(0.0, 5.0), com_at + vec2(0.0, 5.0)],
+            Stroke::new(1.5, Color32::WHITE),
+        );
 
         // The verdict in words.
         let lifted = self.feet.iter().filter(|f| !f.on_ground).count();
         match verdict {
             Ok(s) if s.stable => {
-                ui.label(RichText::new(format!("Statically stable: stability margin {:.1} cm", s.margin * 100.0)).strong().color(good));
+                ui.label(
+                    RichText::new(format!(
+                        "Statically stable: stability margin {:.1} cm",
+                        s.margin * 100.0
+                    ))
+                    .strong()
+                    .color(good),
+                );
             }
             Ok(s) if s.polygon.len() < 3 => {
-                ui.label(RichText::new("Not statically stable: the feet on the ground enclose no area.").strong().color(bad));
+                ui.label(
+                    RichText::new("Not statically stable: the feet on the ground enclose no area.")
+                        .strong()
+                        .color(bad),
+                );
             }
             Ok(s) if s.margin == 0.0 => {
-                ui.label(RichText::new("On the edge: the centre of mass lies on the polygon's border (margin 0).").strong().color(bad));
+                ui.label(
+                    RichText::new(
+                        "On the edge: the centre of mass lies on the polygon's border (margin 0).",
+                    )
+                    .strong()
+                    .color(bad),
+                );
             }
             Ok(s) => {
-                ui.label(RichText::new(format!("Tips over: the centre of mass is {:.1} cm outside the support polygon", -s.margin * 100.0)).strong().color(bad));
+                ui.label(
+                    RichText::new(format!(
+                        "Tips over: the centre of mass is {:.1} cm outside the support polygon",
+                        -s.margin * 100.0
+                    ))
+                    .strong()
+                    .color(bad),
+                );
             }
             Err(_) => {
-                ui.label(RichText::new("No foot is on the ground: the walker falls.").strong().color(bad));
+                ui.label(
+                    RichText::new("No foot is on the ground: the walker falls.")
+                        .strong()
+                        .color(bad),
+                );
             }
         }
         ui.horizontal(|ui| {

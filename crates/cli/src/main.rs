@@ -1,0 +1,181 @@
+//! `kinolab`: the lab's core on the command line.
+//!
+//! Every call prints exactly one JSON document on stdout. Bad input exits
+//! with status 2 and one line on stderr naming the file or option and the
+//! field; nothing ever prints a panic or a backtrace.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use serde_json::{Value, json};
+
+/// The Kinolab robotics lab's core, scriptable. Prints one JSON document per call.
+#[derive(Debug, Parser)]
+#[command(name = "kinolab", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Count the leg-event sequences of a walker: N = (2k − 1)!
+    LegEvents {
+        /// Number of legs k (1 to 17 for an exact count).
+        legs: u32,
+    },
+    /// Judge a standing walker's static stability from above.
+    Stability {
+        /// Centre of mass projected on the ground, metres: X,Y
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+        com: String,
+        /// Feet on the ground, metres: X1,Y1;X2,Y2;...
+        #[arg(long, value_name = "X,Y;X,Y;...", allow_hyphen_values = true)]
+        feet: String,
+    },
+    /// Check lesson files (Markdown with front-matter, widgets, quizzes).
+    Lessons {
+        /// A lessons folder to check; the embedded lessons when omitted.
+        dir: Option<PathBuf>,
+    },
+}
+
+/// A failure reported as one line on stderr.
+struct Failure(String);
+
+fn numbers(option: &str, text: &str) -> Result<Vec<f64>, Failure> {
+    text.split(',')
+        .map(|part| match part.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(Failure(format!(
+                "--{option}: `{}` is not a finite number",
+                part.trim()
+            ))),
+        })
+        .collect()
+}
+
+fn point(option: &str, text: &str) -> Result<[f64; 2], Failure> {
+    match numbers(option, text)?.as_slice() {
+        [x, y] => Ok([*x, *y]),
+        other => Err(Failure(format!(
+            "--{option}: expected two numbers X,Y, got {}",
+            other.len()
+        ))),
+    }
+}
+
+fn run(command: Command) -> Result<Value, Failure> {
+    match command {
+        Command::LegEvents { legs } => {
+            let exact = kinolab_locomotion::leg_events(legs)
+                .map_err(|e| Failure(format!("legs: {}", e.message)))?;
+            Ok(json!({ "legs": legs, "events": exact.to_string(), "events_f64": exact as f64 }))
+        }
+        Command::Stability { com, feet } => {
+            let com = point("com", &com)?;
+            let feet = feet
+                .split(';')
+                .filter(|f| !f.trim().is_empty())
+                .map(|f| point("feet", f))
+                .collect::<Result<Vec<_>, _>>()?;
+            let s = kinolab_locomotion::static_stability(com, &feet)
+                .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)))?;
+            Ok(json!({
+                "stable": s.stable,
+                "margin": s.margin,
+                "support_polygon": s.polygon,
+                "nearest_edge_point": s.nearest,
+            }))
+        }
+        Command::Lessons { dir } => check_lessons(dir),
+    }
+}
+
+fn check_lessons(dir: Option<PathBuf>) -> Result<Value, Failure> {
+    let course = match dir {
+        None => kinolab_lessons::bundled::course(),
+        Some(dir) => {
+            let files = read_lesson_files(&dir)?;
+            kinolab_lessons::Course::from_files(files.iter().map(|(p, t)| (p.as_str(), t.as_str())))
+        }
+    }
+    .map_err(|e| Failure(e.to_string()))?;
+    let units: Vec<Value> = course
+        .units
+        .iter()
+        .map(|u| {
+            json!({
+                "unit": u.slug,
+                "title": u.title,
+                "lessons": u.lessons.iter().map(|l| json!({
+                    "address": format!("{}/{}", u.slug, l.slug),
+                    "title": l.meta.title,
+                    "minutes": l.meta.minutes,
+                    "quizzes": l.blocks.iter().filter(|b| matches!(b, kinolab_lessons::Block::Quiz(_))).count(),
+                    "widgets": l.blocks.iter().filter_map(|b| match b {
+                        kinolab_lessons::Block::Widget(w) => Some(w.name.clone()),
+                        _ => None,
+                    }).collect::<Vec<_>>(),
+                })).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    Ok(json!({ "ok": true, "units": units }))
+}
+
+/// Every Markdown file under `dir`, as paths relative to it.
+fn read_lesson_files(dir: &std::path::Path) -> Result<Vec<(String, String)>, Failure> {
+    let mut out = Vec::new();
+    let read_dir = |d: &std::path::Path| {
+        std::fs::read_dir(d)
+            .map_err(|e| Failure(format!("{}: cannot read folder: {e}", d.display())))
+    };
+    for entry in read_dir(dir)?.flatten() {
+        let path = entry.path();
+        if !path.is_dir() {
+            continue;
+        }
+        let folder = entry.file_name().to_string_lossy().into_owned();
+        for file in read_dir(&path)?.flatten() {
+            let name = file.file_name().to_string_lossy().into_owned();
+            if name.ends_with(".md") {
+                let text = std::fs::read_to_string(file.path())
+                    .map_err(|e| Failure(format!("{}: cannot read: {e}", file.path().display())))?;
+                out.push((format!("{folder}/{name}"), text));
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            let message = e.to_string();
+            let first = message.lines().next().unwrap_or("invalid arguments");
+            eprintln!("kinolab: {}", first.trim_start_matches("error: "));
+            return ExitCode::from(2);
+        }
+        Err(e) => {
+            // --help and --version go to stdout as clap formats them.
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
+    };
+    match run(cli.command) {
+        Ok(value) => {
+            #[allow(clippy::print_stdout)]
+            {
+                println!("{value}");
+            }
+            ExitCode::SUCCESS
+        }
+        Err(Failure(message)) => {
+            eprintln!("kinolab: {message}");
+            ExitCode::from(2)
+        }
+    }
+}

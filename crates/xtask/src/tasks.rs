@@ -1,0 +1,170 @@
+//! The tasks themselves.
+
+use std::process::Command;
+
+use crate::setup::{Needs, Result, ensure, path_env, root, run};
+
+fn cargo(args: &[&str]) -> Command {
+    let mut cmd = Command::new("cargo");
+    cmd.args(args).env("PATH", path_env());
+    cmd
+}
+
+fn tool(program: &str, args: &[&str]) -> Command {
+    let mut cmd = Command::new(program);
+    cmd.args(args).env("PATH", path_env());
+    cmd
+}
+
+/// Build the JavaScript package (crates/js) into web/pkg.
+fn js_package(release: bool) -> Result {
+    let profile = if release { "--release" } else { "--dev" };
+    run(&mut tool(
+        "wasm-pack",
+        &[
+            "build",
+            "crates/js",
+            "--target",
+            "web",
+            profile,
+            "--mode",
+            "no-install",
+            "--out-dir",
+            "../../web/pkg",
+            "--out-name",
+            "kinolab_js",
+        ],
+    ))?;
+    if release {
+        let wasm = "web/pkg/kinolab_js_bg.wasm";
+        run(&mut tool(
+            "wasm-opt",
+            &[
+                "-O2",
+                "--enable-bulk-memory",
+                "--enable-nontrapping-float-to-int",
+                "--enable-sign-ext",
+                "--enable-mutable-globals",
+                wasm,
+                "-o",
+                wasm,
+            ],
+        ))?;
+    }
+    Ok(())
+}
+
+/// Build the static site into dist/.
+pub fn dist() -> Result {
+    ensure(Needs { browser: false })?;
+    js_package(true)?;
+    run(&mut tool("trunk", &["build", "--release", "--offline"]))
+}
+
+/// Build and serve the lab on http://127.0.0.1:8080.
+pub fn serve(args: &[String]) -> Result {
+    ensure(Needs { browser: false })?;
+    let release = !args.iter().any(|a| a == "--dev");
+    js_package(release)?;
+    eprintln!("\nKinolab will be served at http://127.0.0.1:8080 (Ctrl+C stops it)\n");
+    let mut trunk_args = vec!["serve", "--offline"];
+    if release {
+        trunk_args.push("--release");
+    }
+    run(&mut tool("trunk", &trunk_args))
+}
+
+/// Everything that proves the lab works.
+pub fn test() -> Result {
+    let started = std::time::Instant::now();
+    ensure(Needs { browser: true })?;
+    run(&mut cargo(&["fmt", "--all", "--", "--check"]))?;
+    run(&mut cargo(&[
+        "clippy",
+        "--workspace",
+        "--all-targets",
+        "--",
+        "-D",
+        "warnings",
+    ]))?;
+    run(&mut cargo(&[
+        "clippy",
+        "-p",
+        "kinolab-app",
+        "-p",
+        "kinolab-js",
+        "--target",
+        "wasm32-unknown-unknown",
+        "--",
+        "-D",
+        "warnings",
+    ]))?;
+    run(&mut cargo(&["test", "--workspace"]))?;
+    run(cargo(&[
+        "test",
+        "-p",
+        "kinolab-js",
+        "--target",
+        "wasm32-unknown-unknown",
+    ])
+    .env("CHROMEDRIVER", chromedriver()))?;
+    js_package(true)?;
+    run(&mut tool("trunk", &["build", "--release", "--offline"]))?;
+    run(&mut tool(
+        "node",
+        &["tests/e2e/lab.mjs", "dist", "target/e2e"],
+    ))?;
+    eprintln!(
+        "\nAll checks passed in {:.0} s.",
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+fn chromedriver() -> String {
+    std::env::var("CHROMEDRIVER").unwrap_or_else(|_| "/usr/bin/chromedriver".to_owned())
+}
+
+/// Benchmarks: criterion natively, the same kernels as wasm in headless
+/// Chromium, then size and start-up figures.
+pub fn bench(args: &[String]) -> Result {
+    ensure(Needs { browser: true })?;
+    let quick = args.iter().any(|a| a == "--quick");
+    let mut criterion = cargo(&["bench", "-p", "kinolab-bench", "--bench", "kernels", "--"]);
+    if quick {
+        criterion.args(["--warm-up-time", "0.5", "--measurement-time", "1"]);
+    }
+    run(&mut criterion)?;
+    run(&mut cargo(&[
+        "build",
+        "-p",
+        "kinolab-bench",
+        "--lib",
+        "--target",
+        "wasm32-unknown-unknown",
+        "--profile",
+        "bench",
+    ]))?;
+    run(&mut tool(
+        "wasm-bindgen",
+        &[
+            "--target",
+            "web",
+            "--out-dir",
+            "target/bench-web",
+            "target/wasm32-unknown-unknown/bench/kinolab_bench.wasm",
+        ],
+    ))?;
+    if !root().join("dist/index.html").exists() {
+        dist()?;
+    }
+    run(&mut tool(
+        "node",
+        &[
+            "tests/e2e/bench.mjs",
+            "target/criterion",
+            "target/bench-web",
+            "dist",
+        ],
+    ))
+}

@@ -1,0 +1,82 @@
+// Benchmarks in headless Chromium, printed beside criterion's native figures.
+//
+// usage: node tests/e2e/bench.mjs CRITERION_DIR BENCH_WEB_DIR DIST_DIR
+import { readFile, readdir, stat, writeFile, mkdir } from "node:fs/promises";
+import { gzipSync } from "node:zlib";
+import { join } from "node:path";
+import { serve, launch, waitForLab } from "./serve.mjs";
+
+const [criterionDir, benchWeb, dist] = process.argv.slice(2);
+const median = (xs) => { const s = [...xs].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
+const fmt = (ns) => ns >= 1e6 ? `${(ns / 1e6).toFixed(2)} ms` : ns >= 1e3 ? `${(ns / 1e3).toFixed(2)} µs` : `${ns.toFixed(1)} ns`;
+
+// A page that loads the bench module; the harness lives in the page.
+await writeFile(join(benchWeb, "index.html"), `<!DOCTYPE html><script type="module">
+import init, * as bench from "./kinolab_bench.js";
+await init();
+window.bench = bench;
+window.benchReady = true;
+</script>`);
+
+const browser = await launch();
+const benchServer = await serve(benchWeb);
+const page = await browser.newPage();
+await page.goto(benchServer.url);
+await page.waitForFunction(() => window.benchReady, null, { timeout: 60_000 });
+const names = (await page.evaluate(() => window.bench.kernel_names())).split(",");
+const rows = [];
+for (const name of names) {
+  const wasmNs = await page.evaluate((name) => {
+    // Calibrate so one sample lasts about 20 ms, then take 15 samples.
+    let iterations = 1;
+    for (;;) {
+      const t0 = performance.now();
+      window.bench.run_kernel(name, iterations);
+      if (performance.now() - t0 > 20 || iterations > 1e8) break;
+      iterations *= 2;
+    }
+    const samples = [];
+    for (let i = 0; i < 15; i++) {
+      const t0 = performance.now();
+      window.bench.run_kernel(name, iterations);
+      samples.push(((performance.now() - t0) * 1e6) / iterations);
+    }
+    samples.sort((a, b) => a - b);
+    return samples[7];
+  }, name);
+  let nativeNs = NaN;
+  try {
+    const est = JSON.parse(await readFile(join(criterionDir, name, "new", "estimates.json"), "utf8"));
+    nativeNs = est.median.point_estimate;
+  } catch { /* no native figure */ }
+  rows.push({ name, nativeNs, wasmNs, ratio: wasmNs / nativeNs });
+}
+await benchServer.close();
+
+// Size of the lab's wasm and time to first frame (median of 5 cold loads).
+const wasmFile = (await readdir(dist)).find((f) => f.endsWith(".wasm") && f.startsWith("kinolab-lab"));
+const wasmBytes = await readFile(join(dist, wasmFile));
+const labServer = await serve(dist);
+const firstFrames = [];
+for (let i = 0; i < 5; i++) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  const lab = await context.newPage();
+  await lab.goto(`${labServer.url}#dev`);
+  await waitForLab(lab);
+  firstFrames.push(Number(await lab.evaluate(() => document.documentElement.dataset.kinolabFirstFrameMs)));
+  await context.close();
+}
+await labServer.close();
+await browser.close();
+
+const lines = [];
+lines.push("| kernel | native (criterion median) | wasm in Chromium (median) | wasm / native |");
+lines.push("|---|---:|---:|---:|");
+for (const r of rows) lines.push(`| ${r.name} | ${fmt(r.nativeNs)} | ${fmt(r.wasmNs)} | ${r.ratio.toFixed(2)}× |`);
+lines.push("");
+lines.push(`lab wasm: ${(wasmBytes.length / 1e6).toFixed(2)} MB raw, ${(gzipSync(wasmBytes, { level: 9 }).length / 1e6).toFixed(2)} MB gzipped`);
+lines.push(`first frame after navigation: median ${median(firstFrames).toFixed(0)} ms of 5 cold loads (${firstFrames.map((x) => x.toFixed(0)).join(", ")} ms)`);
+const report = lines.join("\n");
+console.log(report);
+await mkdir("target", { recursive: true });
+await writeFile("target/bench-report.md", report + "\n");

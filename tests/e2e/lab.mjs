@@ -1,0 +1,103 @@
+// End-to-end: the built lab in headless Chromium, as a learner opens it.
+//
+// usage: node tests/e2e/lab.mjs DIST_DIR OUT_DIR
+// Serves DIST_DIR, opens a lesson by deep link, reloads, goes back and
+// forward, goes offline and reloads, takes screenshots into OUT_DIR, and
+// fails on any console error, page error or panic text.
+import { mkdir } from "node:fs/promises";
+import assert from "node:assert/strict";
+import { serve, launch, waitForLab } from "./serve.mjs";
+
+const [dist = "dist", out = "target/e2e"] = process.argv.slice(2);
+await mkdir(out, { recursive: true });
+const server = await serve(dist);
+const browser = await launch();
+const problems = [];
+let passed = 0;
+let failed = 0;
+
+async function check(name, fn) {
+  try {
+    await fn();
+    passed += 1;
+    console.log(`ok   ${name}`);
+  } catch (e) {
+    failed += 1;
+    console.log(`FAIL ${name}: ${e.message}`);
+  }
+}
+
+try {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  const page = await context.newPage();
+  page.on("console", (m) => { if (m.type() === "error") problems.push(`console error: ${m.text()}`); });
+  page.on("pageerror", (e) => problems.push(`page error: ${e.message}`));
+
+  const lesson = "automation/ways-to-move";
+  await check("a deep link opens its lesson on the first frame", async () => {
+    await page.goto(`${server.url}#/${lesson}`);
+    assert.equal(await waitForLab(page), lesson);
+    assert.match(await page.title(), /Ways .* Kinolab|· Kinolab/);
+    await page.waitForTimeout(500);
+    await page.screenshot({ path: `${out}/lesson.png` });
+  });
+
+  await check("the lesson is still there after a reload", async () => {
+    await page.reload();
+    assert.equal(await waitForLab(page), lesson);
+  });
+
+  await check("back and forward follow the history", async () => {
+    await page.evaluate(() => { location.hash = "#/automation/open-and-closed-worlds"; });
+    await page.waitForFunction(() => document.documentElement.dataset.kinolabPage === "automation/open-and-closed-worlds");
+    await page.goBack();
+    await page.waitForFunction((l) => document.documentElement.dataset.kinolabPage === l, lesson);
+    await page.goForward();
+    await page.waitForFunction(() => document.documentElement.dataset.kinolabPage === "automation/open-and-closed-worlds");
+  });
+
+  await check("the home page renders", async () => {
+    await page.goto(`${server.url}`);
+    assert.equal(await waitForLab(page), "");
+    await page.waitForTimeout(300);
+    await page.screenshot({ path: `${out}/home.png` });
+  });
+
+  await check("a lab opened once works offline", async () => {
+    await page.evaluate(() => navigator.serviceWorker.ready);
+    await page.reload();            // now controlled by the service worker, which caches
+    await waitForLab(page);
+    await page.waitForTimeout(500);
+    await context.setOffline(true);
+    await page.goto(`${server.url}#/${lesson}`);
+    assert.equal(await waitForLab(page), lesson);
+    await context.setOffline(false);
+  });
+
+  await check("no error box and no panic text", async () => {
+    const text = await page.evaluate(() => document.body.innerText);
+    assert.ok(!/panicked|internal error|could not start/i.test(text), text);
+    const errorShown = await page.evaluate(() => document.getElementById("kinolab-error").style.display === "block");
+    assert.equal(errorShown, false);
+  });
+
+  const embed = await context.newPage();
+  embed.on("console", (m) => { if (m.type() === "error") problems.push(`embed console error: ${m.text()}`); });
+  embed.on("pageerror", (e) => problems.push(`embed page error: ${e.message}`));
+  await check("the JS package works in the embed page", async () => {
+    await embed.goto(`${server.url}embed.html`);
+    await embed.waitForFunction(() => document.documentElement.dataset.kinolabEmbedReady, null, { timeout: 30_000 });
+    assert.equal(await embed.textContent("#legs-out"), "N = (2k − 1)! = 39916800");
+    assert.match(await embed.textContent("#stability-out"), /^Statically stable, margin 18\.0 cm$/);
+    await embed.screenshot({ path: `${out}/embed.png`, fullPage: true });
+  });
+
+  await check("no console errors or page errors", async () => {
+    assert.deepEqual(problems.filter((p) => !/ERR_INTERNET_DISCONNECTED|Failed to load resource/.test(p)), []);
+  });
+} finally {
+  await browser.close();
+  await server.close();
+}
+console.log(`e2e: ${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);
