@@ -1,13 +1,13 @@
 // Screenshots of every page for a visual review (not a test).
-// usage: node tests/e2e/screenshots.mjs DIST_DIR OUT_DIR [HEIGHT] [dark]
+// usage: node tests/e2e/screenshots.mjs DIST_DIR OUT_DIR [HEIGHT] [light|dark] [WIDTH]
 import { mkdir } from "node:fs/promises";
 import { serve, launch, waitForLab } from "./serve.mjs";
 
-const [dist = "dist", out = "target/screenshots", height = "4000", theme = "light"] = process.argv.slice(2);
+const [dist = "dist", out = "target/screenshots", height = "4000", theme = "light", width = "1280"] = process.argv.slice(2);
 await mkdir(out, { recursive: true });
 const server = await serve(dist);
 const browser = await launch();
-const context = await browser.newContext({ viewport: { width: 1280, height: Number(height) }, colorScheme: theme });
+const context = await browser.newContext({ viewport: { width: Number(width), height: Number(height) }, colorScheme: theme });
 const page = await context.newPage();
 page.on("console", (m) => { if (m.type() === "error") console.log(`console error: ${m.text()}`); });
 await page.goto(`${server.url}#dev`);

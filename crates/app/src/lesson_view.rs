@@ -235,10 +235,30 @@ fn table_ui(
     rows: &[Vec<Inline>],
     state: &mut LessonState<'_>,
 ) {
-    let id = ui.next_auto_id();
-    let columns = header.len().max(rows.first().map_or(1, Vec::len)).max(1);
-    // Share the column among the table's columns so it never overflows.
-    let cell_width = ((ui.available_width() - 24.0) / columns as f32 - 18.0).clamp(60.0, 320.0);
+    // Share the text column among the table's columns in proportion to
+    // their longest cell, so the table never overflows and short columns
+    // stay narrow.
+    let columns = header
+        .len()
+        .max(rows.iter().map(Vec::len).max().unwrap_or(0))
+        .max(1);
+    let weight = |col: usize| {
+        std::iter::once(header.get(col))
+            .chain(rows.iter().map(|r| r.get(col)))
+            .flatten()
+            .map(|cell| kinolab_lessons::plain_text(cell).chars().count())
+            .max()
+            .unwrap_or(0)
+            .clamp(6, 40) as f32
+    };
+    let weights: Vec<f32> = (0..columns).map(weight).collect();
+    let total: f32 = weights.iter().sum();
+    let gap = 16.0;
+    let usable = ui.available_width() - 14.0 - gap * (columns as f32 - 1.0);
+    let widths: Vec<f32> = weights
+        .iter()
+        .map(|w| (usable * w / total).max(40.0))
+        .collect();
     egui::Frame::new()
         .stroke(Stroke::new(
             1.0,
@@ -247,21 +267,32 @@ fn table_ui(
         .corner_radius(4.0)
         .inner_margin(6.0)
         .show(ui, |ui| {
-            egui::Grid::new(id)
-                .striped(true)
-                .spacing([18.0, 6.0])
-                .show(ui, |ui| {
-                    for (col, cell) in header.iter().enumerate() {
-                        cell_ui(ui, cell, align.get(col), cell_width, true, state);
-                    }
-                    ui.end_row();
-                    for row in rows {
+            ui.spacing_mut().item_spacing.y = 2.0;
+            let all_rows = std::iter::once(header).chain(rows.iter().map(Vec::as_slice));
+            for (index, row) in all_rows.enumerate() {
+                // Rows are laid out in this frame, so a row is as tall as
+                // its tallest cell; the stripe is painted behind afterwards.
+                let stripe = ui.painter().add(egui::Shape::Noop);
+                let response = ui
+                    .horizontal_top(|ui| {
+                        ui.spacing_mut().item_spacing.x = gap;
                         for (col, cell) in row.iter().enumerate() {
-                            cell_ui(ui, cell, align.get(col), cell_width, false, state);
+                            let width = widths.get(col).copied().unwrap_or(40.0);
+                            cell_ui(ui, cell, align.get(col), width, index == 0, state);
                         }
-                        ui.end_row();
-                    }
-                });
+                    })
+                    .response;
+                if index % 2 == 1 {
+                    let fill = ui.visuals().faint_bg_color;
+                    let rect = response.rect.expand2(egui::vec2(4.0, 1.0));
+                    ui.painter()
+                        .set(stripe, egui::Shape::rect_filled(rect, 2.0, fill));
+                } else if index == 0 {
+                    let y = response.rect.bottom() + 1.0;
+                    let stroke = ui.visuals().widgets.noninteractive.bg_stroke;
+                    ui.painter().hline(response.rect.x_range(), y, stroke);
+                }
+            }
         });
 }
 
@@ -279,7 +310,7 @@ fn cell_ui(
         _ => egui::Layout::top_down(egui::Align::Min),
     };
     ui.allocate_ui_with_layout(egui::vec2(width, 0.0), layout, |ui| {
-        ui.set_max_width(width);
+        ui.set_width(width);
         inline_ui(ui, cell, theme::BODY_SIZE - 1.0, header, state.navigate);
     });
 }

@@ -225,7 +225,10 @@ impl<'src> BodyParser<'_, 'src> {
         block.contains('\n') && (last_line.starts_with("```") || last_line.starts_with("~~~"))
     }
 
-    fn skip_container(&mut self) {
+    /// Consume events up to the `End` that closes an already opened
+    /// container, returning them (nested containers included).
+    fn take_container(&mut self) -> Vec<Event<'src>> {
+        let mut taken = Vec::new();
         let mut depth = 1usize;
         while let Some((event, _)) = self.next() {
             match event {
@@ -233,12 +236,18 @@ impl<'src> BodyParser<'_, 'src> {
                 Event::End(_) => {
                     depth -= 1;
                     if depth == 0 {
-                        return;
+                        break;
                     }
                 }
                 _ => {}
             }
+            taken.push(event);
         }
+        taken
+    }
+
+    fn skip_container(&mut self) {
+        self.take_container();
     }
 
     fn code_text(&mut self) -> String {
@@ -322,18 +331,9 @@ impl<'src> BodyParser<'_, 'src> {
 
     fn image_alt(&mut self) -> String {
         let mut alt = String::new();
-        let mut depth = 1usize;
-        while let Some((event, _)) = self.next() {
-            match event {
-                Event::Start(_) => depth += 1,
-                Event::End(_) => {
-                    depth -= 1;
-                    if depth == 0 {
-                        break;
-                    }
-                }
-                Event::Text(t) | Event::Code(t) => alt.push_str(&t),
-                _ => {}
+        for event in self.take_container() {
+            if let Event::Text(t) | Event::Code(t) = event {
+                alt.push_str(&t);
             }
         }
         alt

@@ -152,7 +152,8 @@ pub fn bench(args: &[String]) -> Result {
             "web",
             "--out-dir",
             "target/bench-web",
-            "target/wasm32-unknown-unknown/bench/kinolab_bench.wasm",
+            // Cargo keeps the bench profile's artifacts in the release folder.
+            "target/wasm32-unknown-unknown/release/kinolab_bench.wasm",
         ],
     ))?;
     if !root().join("dist/index.html").exists() {
