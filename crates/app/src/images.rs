@@ -85,3 +85,43 @@ impl ImageCache {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn encode(width: u32, height: u32, color: png::ColorType, pixels: &[u8]) -> Vec<u8> {
+        let mut bytes = Vec::new();
+        let mut encoder = png::Encoder::new(&mut bytes, width, height);
+        encoder.set_color(color);
+        encoder.set_depth(png::BitDepth::Eight);
+        let mut writer = encoder.write_header().unwrap();
+        writer.write_image_data(pixels).unwrap();
+        writer.finish().unwrap();
+        bytes
+    }
+
+    #[test]
+    fn rgb_and_rgba_pngs_decode_to_the_same_pixels() {
+        let rgb = encode(2, 1, png::ColorType::Rgb, &[255, 0, 0, 0, 0, 255]);
+        let image = decode_png(&rgb).unwrap();
+        assert_eq!(image.size, [2, 1]);
+        assert_eq!(image.pixels[0], egui::Color32::from_rgb(255, 0, 0));
+        assert_eq!(image.pixels[1], egui::Color32::from_rgb(0, 0, 255));
+        let gray = encode(1, 1, png::ColorType::Grayscale, &[128]);
+        assert_eq!(
+            decode_png(&gray).unwrap().pixels[0],
+            egui::Color32::from_gray(128)
+        );
+    }
+
+    #[test]
+    fn garbage_is_an_error_not_a_panic() {
+        assert!(
+            decode_png(b"not a png")
+                .unwrap_err()
+                .starts_with("not a readable PNG")
+        );
+        assert!(decode_png(&[]).is_err());
+    }
+}
