@@ -208,9 +208,9 @@ impl KinolabApp {
                         self.apply_theme(ui.ctx());
                     }
                     if let Ok(course) = &self.course {
-                        let total = course.addresses().len();
-                        let visited = course
-                            .addresses()
+                        let addresses = course.addresses();
+                        let total = addresses.len();
+                        let visited = addresses
                             .iter()
                             .filter(|a| self.progress.visited.contains(*a))
                             .count();
