@@ -1,0 +1,280 @@
+//! Inverse kinematics (twist → wheel commands), forward kinematics (wheel
+//! spins → twist, by least squares) and pose integration.
+
+use nalgebra::{Matrix3, Vector3};
+use serde::Serialize;
+
+use crate::analysis::line_row;
+use crate::chassis::{Chassis, group_meeting_point, nearest_half_turn};
+use crate::error::{WheelsError, finite};
+use crate::wheel::{SlidingExtra, Wheel, WheelKind};
+
+/// What one wheel must do for a requested chassis twist.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WheelCommand {
+    /// Spin rate φ̇, rad/s.
+    pub spin: f64,
+    /// Steering angle β, rad: the new one for steered and spherical wheels,
+    /// the current one for the rest.
+    pub steer: f64,
+    /// Steering rate β̇, rad/s (castors swing by themselves at this rate).
+    pub steer_rate: f64,
+    /// Swedish wheels: surface speed of the rollers, r_sw φ̇_sw, m/s.
+    pub roller_speed: Option<f64>,
+}
+
+/// A constraint a twist breaks.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Violation {
+    pub wheel: usize,
+    /// `sliding` for a fixed wheel's sliding row, `steer_group` when a
+    /// linkage cannot set its wheels as the twist needs.
+    pub constraint: &'static str,
+    pub group: Option<String>,
+    /// The row's value for this twist, m/s (0 would be satisfied).
+    pub residual: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InverseSolution {
+    pub feasible: bool,
+    pub wheels: Vec<WheelCommand>,
+    pub violations: Vec<Violation>,
+}
+
+/// The tolerance for "satisfied" rows: 1e-9 of the twist's own size.
+fn tolerance(twist: &Vector3<f64>, wheel: &Wheel) -> f64 {
+    1e-9 * (twist.x.abs() + twist.y.abs() + twist.z.abs() * (1.0 + wheel.l)).max(1.0)
+}
+
+fn check_twist(twist: &Vector3<f64>) -> Result<(), WheelsError> {
+    for (i, v) in twist.iter().enumerate() {
+        finite(format!("twist[{i}]"), *v)?;
+    }
+    Ok(())
+}
+
+impl Chassis {
+    /// Inverse kinematics: each wheel's spin (and steering) for a chassis
+    /// twist ξ̇_R = (ẋ_R, ẏ_R, θ̇), with every constraint the twist breaks.
+    pub fn inverse(&self, twist: Vector3<f64>) -> Result<InverseSolution, WheelsError> {
+        check_twist(&twist)?;
+        let mut violations = Vec::new();
+        let wheels: Vec<WheelCommand> = self
+            .wheels()
+            .iter()
+            .enumerate()
+            .map(|(i, w)| {
+                let rows = w.rows();
+                let rolling_spin = rows.rolling.dot(&twist) / rows.spin_gain;
+                match (w.kind, rows.sliding_extra) {
+                    (WheelKind::Fixed, _) => {
+                        let residual = rows.sliding.dot(&twist);
+                        if residual.abs() > tolerance(&twist, w) {
+                            violations.push(Violation {
+                                wheel: i,
+                                constraint: "sliding",
+                                group: None,
+                                residual,
+                            });
+                        }
+                        command(rolling_spin, w.beta, 0.0)
+                    }
+                    (WheelKind::Steered | WheelKind::Spherical, _) => align(w, &twist),
+                    (_, SlidingExtra::SteerRate { offset }) => {
+                        command(rolling_spin, w.beta, -rows.sliding.dot(&twist) / offset)
+                    }
+                    (_, SlidingExtra::Rollers { spin_gain }) => WheelCommand {
+                        roller_speed: Some(rows.sliding.dot(&twist) - spin_gain * rolling_spin),
+                        ..command(rolling_spin, w.beta, 0.0)
+                    },
+                    _ => command(rolling_spin, w.beta, 0.0),
+                }
+            })
+            .collect();
+        let rank_c1f = self.analyze().rank_c1f;
+        for input in self.steering_inputs() {
+            if input.wheels.len() < 2 {
+                continue;
+            }
+            let row = match group_meeting_point(self.wheels(), &input.wheels) {
+                None => Vector3::new(0.0, 0.0, 1.0),
+                Some(_) if rank_c1f > 0 => continue,
+                Some([cx, cy]) => {
+                    let n = cx.hypot(cy);
+                    let dir = if n > 1e-9 {
+                        [cx / n, cy / n]
+                    } else {
+                        [0.0, 1.0]
+                    };
+                    line_row([cx, cy], dir)
+                }
+            };
+            let residual = row.dot(&twist);
+            let first = input.wheels[0];
+            if residual.abs() > tolerance(&twist, &self.wheels()[first]) {
+                violations.push(Violation {
+                    wheel: first,
+                    constraint: "steer_group",
+                    group: input.group.clone(),
+                    residual,
+                });
+            }
+        }
+        Ok(InverseSolution {
+            feasible: violations.is_empty(),
+            wheels,
+            violations,
+        })
+    }
+}
+
+fn command(spin: f64, steer: f64, steer_rate: f64) -> WheelCommand {
+    WheelCommand {
+        spin,
+        steer,
+        steer_rate,
+        roller_speed: None,
+    }
+}
+
+/// Steer a wheel so it rolls along its contact point's velocity (the
+/// solution nearest its current angle), and spin it to match.
+fn align(w: &Wheel, twist: &Vector3<f64>) -> WheelCommand {
+    let [ux, uy] = w.contact_velocity(twist);
+    let speed = ux.hypot(uy);
+    if speed <= 1e-12 * (1.0 + twist.norm()) {
+        // The wheel sits on the ICR: any angle works, keep the current one.
+        return command(0.0, w.beta, 0.0);
+    }
+    // Rolling direction (sin(α+β), −cos(α+β)) ∥ u ⇔ α + β = atan2(u_x, −u_y).
+    let beta = nearest_half_turn(w.beta, ux.atan2(-uy) - w.alpha);
+    let mut steered = w.clone();
+    steered.beta = beta;
+    let [tx, ty] = steered.rolling_direction();
+    command((tx * ux + ty * uy) / w.radius, beta, 0.0)
+}
+
+/// Forward kinematics: the chassis twist that best explains the spins.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ForwardSolution {
+    pub twist: [f64; 3],
+    /// ‖A ξ̇ − b‖ over every rolling and sliding row used.
+    pub residual: f64,
+    /// The residual is within 1e-9 of ‖b‖: the spins agree with each other.
+    pub consistent: bool,
+    /// The known spins pin the twist down (rank 3). When false the twist is
+    /// the smallest one that fits.
+    pub determined: bool,
+    /// How many rows were used.
+    pub rows: usize,
+}
+
+impl Chassis {
+    /// Forward kinematics from one spin per wheel (`None`: unknown, its
+    /// rolling row is left out). Sliding rows of fixed and steered wheels
+    /// always take part; castor and Swedish sliding rows carry unknowns
+    /// (β̇, roller spin) and a ball's spin has no direction, so those are
+    /// left out.
+    pub fn forward(&self, spins: &[Option<f64>]) -> Result<ForwardSolution, WheelsError> {
+        if spins.len() != self.wheels().len() {
+            return Err(WheelsError::new(
+                "wheels",
+                format!(
+                    "expected one spin per wheel ({}), got {}",
+                    self.wheels().len(),
+                    spins.len()
+                ),
+            ));
+        }
+        let mut normal = Matrix3::zeros();
+        let mut rhs = Vector3::zeros();
+        let mut b_norm2 = 0.0;
+        let mut used = 0;
+        let mut add = |row: Vector3<f64>, b: f64| {
+            normal += row * row.transpose();
+            rhs += row * b;
+            b_norm2 += b * b;
+            used += 1;
+        };
+        for (i, (w, spin)) in self.wheels().iter().zip(spins).enumerate() {
+            let rows = w.rows();
+            if let Some(spin) = spin {
+                finite(format!("wheels[{i}] spin"), *spin)?;
+                if w.kind != WheelKind::Spherical {
+                    add(rows.rolling, rows.spin_gain * spin);
+                }
+            }
+            if w.kind.constrains_chassis() {
+                add(rows.sliding, 0.0);
+            }
+        }
+        let (twist, determined) = match normal.cholesky() {
+            Some(chol) if normal.determinant().abs() > 1e-12 * normal.norm().powi(3) => {
+                (chol.solve(&rhs), true)
+            }
+            _ => {
+                let svd = normal.svd(true, true);
+                let eps = 1e-12 * svd.singular_values.max();
+                match svd.solve(&rhs, eps) {
+                    Ok(v) => (v, false),
+                    Err(_) => (Vector3::zeros(), false),
+                }
+            }
+        };
+        // ‖Av − b‖² = vᵀ(AᵀA)v − 2 vᵀ(Aᵀb) + bᵀb, recomputed directly for accuracy.
+        let mut residual2 = 0.0;
+        for (w, spin) in self.wheels().iter().zip(spins) {
+            let rows = w.rows();
+            if let Some(spin) = spin
+                && w.kind != WheelKind::Spherical
+            {
+                residual2 += (rows.rolling.dot(&twist) - rows.spin_gain * spin).powi(2);
+            }
+            if w.kind.constrains_chassis() {
+                residual2 += rows.sliding.dot(&twist).powi(2);
+            }
+        }
+        let residual = residual2.sqrt();
+        Ok(ForwardSolution {
+            twist: [twist.x, twist.y, twist.z],
+            residual,
+            consistent: residual <= 1e-9 * b_norm2.sqrt() || residual <= 1e-12,
+            determined,
+            rows: used,
+        })
+    }
+}
+
+/// R(θ): maps inertial motion to robot-frame motion, ξ̇_R = R(θ) ξ̇_I.
+pub fn rotation(theta: f64) -> Matrix3<f64> {
+    let (s, c) = theta.sin_cos();
+    Matrix3::new(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0)
+}
+
+/// Robot-frame twist to inertial motion: ξ̇_I = R(θ)ᵀ ξ̇_R.
+pub fn to_inertial(theta: f64, twist: Vector3<f64>) -> Vector3<f64> {
+    rotation(theta).transpose() * twist
+}
+
+/// The pose after driving with a constant robot-frame twist for `dt`
+/// seconds from `pose` = (x, y, θ). Exact: the robot follows a circular arc
+/// (or a line), integrated in closed form with a sinc that stays accurate as
+/// θ̇ → 0.
+pub fn integrate(pose: [f64; 3], twist: Vector3<f64>, dt: f64) -> [f64; 3] {
+    let [x, y, theta] = pose;
+    let half = twist.z * dt / 2.0;
+    let mid = theta + half;
+    let sinc = if half.abs() < 1e-4 {
+        1.0 - half * half / 6.0
+    } else {
+        half.sin() / half
+    };
+    let (s, c) = mid.sin_cos();
+    let k = dt * sinc;
+    [
+        x + k * (twist.x * c - twist.y * s),
+        y + k * (twist.x * s + twist.y * c),
+        theta + twist.z * dt,
+    ]
+}
