@@ -4,6 +4,8 @@
 //! with status 2 and one line on stderr naming the file or option and the
 //! field; nothing ever prints a panic or a backtrace.
 
+mod wheels;
+
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -33,6 +35,30 @@ enum Command {
         /// Feet on the ground, metres: X1,Y1;X2,Y2;...
         #[arg(long, value_name = "X,Y;X,Y;...", allow_hyphen_values = true)]
         feet: String,
+    },
+    /// Rank of C1, the degrees of mobility, steerability and maneuverability, DOF and the ICR of a robot file.
+    Analyze {
+        /// A robot file (`*.robot.json`), or `catalogue:<id>`.
+        robot: PathBuf,
+    },
+    /// Wheel kinematics: --twist gives each wheel's spin and steering (inverse); --wheels gives the twist (forward).
+    Drive {
+        /// A robot file (`*.robot.json`), or `catalogue:<id>`.
+        robot: PathBuf,
+        /// Robot-frame twist, m/s and rad/s: VX,VY,OMEGA
+        #[arg(long, value_name = "VX,VY,OMEGA", allow_hyphen_values = true)]
+        twist: Option<String>,
+        /// One spin per wheel in file order, rad/s; `-` where unknown: S1,S2,...
+        #[arg(long, value_name = "S1,S2,...", allow_hyphen_values = true)]
+        wheels: Option<String>,
+        /// Heading θ (rad) to also report the motion in the inertial frame.
+        #[arg(long, allow_hyphen_values = true)]
+        theta: Option<f64>,
+    },
+    /// List the catalogue robots, or print one as a robot file.
+    Robots {
+        /// A catalogue id such as `tricycle`.
+        id: Option<String>,
     },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
@@ -89,6 +115,14 @@ fn run(command: Command) -> Result<Value, Failure> {
                 "nearest_edge_point": s.nearest,
             }))
         }
+        Command::Analyze { robot } => wheels::analyze(&robot),
+        Command::Drive {
+            robot,
+            twist,
+            wheels: spins,
+            theta,
+        } => wheels::drive(&robot, twist.as_deref(), spins.as_deref(), theta),
+        Command::Robots { id } => wheels::robots(id.as_deref()),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

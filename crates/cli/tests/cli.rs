@@ -123,3 +123,200 @@ fn bad_input_is_one_line_naming_the_field() {
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert!(!stderr.contains("panicked"));
 }
+
+/// Write `text` to a fresh file under the system temp folder.
+fn robot_file(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("kinolab-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+const EVERY_WHEEL_KIND: &str = r#"{
+  "name": "every-wheel-kind",
+  "wheels": [
+    { "kind": "fixed",     "alpha_deg": 90,  "beta_deg": 0,   "l": 0.25, "radius": 0.1 },
+    { "kind": "fixed",     "alpha_deg": -90, "beta_deg": 180, "l": 0.25, "radius": 0.1 },
+    { "kind": "steered",   "alpha_deg": 0,   "beta_deg": 90,  "l": 0.60, "radius": 0.1 },
+    { "kind": "castor",    "alpha_deg": 180, "beta_deg": 0,   "l": 0.30, "radius": 0.05, "offset": 0.04 },
+    { "kind": "swedish",   "alpha_deg": 60,  "beta_deg": 0,   "l": 0.20, "radius": 0.05, "gamma_deg": 45 },
+    { "kind": "spherical", "alpha_deg": 0,   "l": 0.20, "radius": 0.05 }
+  ]
+}"#;
+
+#[test]
+fn analyze_the_contract_example() {
+    let path = robot_file("every.robot.json", EVERY_WHEEL_KIND);
+    let out = json(&["analyze", &path]);
+    // Rear axle plus a straight steered front wheel: translation only now,
+    // one steering input to turn with.
+    assert_eq!(out["rank_c1"], 2);
+    assert_eq!(out["degree_of_mobility"], 1);
+    assert_eq!(out["degree_of_steerability"], 1);
+    assert_eq!(out["degree_of_maneuverability"], 2);
+    assert_eq!(out["dof"], 3);
+    assert_eq!(out["holonomic"], false);
+    assert_eq!(out["icr"]["kind"], "infinity");
+    assert_eq!(out["icr"]["direction"], serde_json::json!([1.0, 0.0]));
+}
+
+#[test]
+fn analyze_reports_each_icr_kind() {
+    let kind = |id: &str| json(&["analyze", &format!("catalogue:{id}")])["icr"].clone();
+    assert_eq!(kind("three-swedish")["kind"], "anywhere");
+    let line = kind("differential-drive");
+    assert_eq!(line["kind"], "line");
+    assert_eq!(line["point"], serde_json::json!([0.0, 0.0]));
+    assert_eq!(line["direction"], serde_json::json!([0.0, 1.0]));
+    let point = kind("ackermann-car");
+    assert_eq!(point["kind"], "point");
+    assert!((point["x"].as_f64().unwrap()).abs() < 1e-9);
+    assert!((point["y"].as_f64().unwrap() - 2.5).abs() < 1e-9);
+    let stuck = robot_file(
+        "stuck.robot.json",
+        r#"{"wheels":[
+            {"kind":"fixed","alpha_deg":90,"beta_deg":0,"l":0.3,"radius":0.1},
+            {"kind":"fixed","alpha_deg":210,"beta_deg":0,"l":0.3,"radius":0.1},
+            {"kind":"fixed","alpha_deg":330,"beta_deg":0,"l":0.3,"radius":0.1},
+            {"kind":"fixed","alpha_deg":0,"beta_deg":60,"l":0.5,"radius":0.1}]}"#,
+    );
+    let out = json(&["analyze", &stuck]);
+    assert_eq!(out["icr"]["kind"], "none");
+    assert_eq!(out["degree_of_mobility"], 0);
+    assert_eq!(out["disagreement"]["disagree"][0]["wheel"], 3);
+}
+
+#[test]
+fn drive_inverse_and_forward() {
+    // Siegwart: r = l = 1, right wheel first.
+    let path = robot_file(
+        "siegwart.robot.json",
+        r#"{"name":"siegwart","wheels":[
+            {"kind":"fixed","alpha_deg":-90,"beta_deg":180,"l":1,"radius":1},
+            {"kind":"fixed","alpha_deg":90,"beta_deg":0,"l":1,"radius":1}]}"#,
+    );
+    let out = json(&[
+        "drive",
+        &path,
+        "--wheels",
+        "4,2",
+        "--theta",
+        "1.5707963267948966",
+    ]);
+    let close = |v: &Value, want: [f64; 3]| {
+        (0..3).all(|i| (v[i].as_f64().unwrap() - want[i]).abs() < 1e-12)
+    };
+    assert!(close(&out["twist"], [3.0, 0.0, 1.0]), "{out}");
+    assert!(close(&out["twist_inertial"], [0.0, 3.0, 1.0]), "{out}");
+    assert_eq!(out["residual"], 0.0);
+    assert_eq!(out["consistent"], true);
+    let out = json(&["drive", &path, "--twist", "3,0,1"]);
+    assert_eq!(out["feasible"], true);
+    assert_eq!(out["wheels"][0]["spin"], 4.0);
+    assert_eq!(out["wheels"][1]["spin"], 2.0);
+    // Sideways is what a differential drive cannot do.
+    let out = json(&["drive", &path, "--twist", "0,1,0"]);
+    assert_eq!(out["feasible"], false);
+    assert_eq!(out["violations"].as_array().unwrap().len(), 2);
+    assert_eq!(out["violations"][0]["wheel"], 0);
+    assert_eq!(out["violations"][0]["residual"], 1.0);
+    // One known spin cannot pin down the turn rate.
+    let out = json(&["drive", &path, "--wheels", "4,-"]);
+    assert_eq!(out["consistent"], true);
+    assert_eq!(out["determined"], false);
+}
+
+#[test]
+fn drive_steers_to_the_nearest_angle() {
+    let path = robot_file("every2.robot.json", EVERY_WHEEL_KIND);
+    // Turning left about (0, 2.5): the front wheel steers by atan(0.6/2.5).
+    let out = json(&["drive", &path, "--twist", "0.5,0,0.2"]);
+    assert_eq!(out["feasible"], true);
+    let steer = out["wheels"][2]["steer_deg"].as_f64().unwrap();
+    assert!((steer - (90.0 + (0.6f64 / 2.5).atan().to_degrees())).abs() < 1e-6);
+    let spin = out["wheels"][2]["spin"].as_f64().unwrap();
+    assert!((spin * 0.1 - 0.2 * 0.6f64.hypot(2.5)).abs() < 1e-9);
+    let castor_rate = out["wheels"][3]["steer_rate_deg"].as_f64().unwrap();
+    assert!(castor_rate.abs() > 1.0, "a sideways castor swings round");
+    assert_eq!(out["wheels"].as_array().unwrap().len(), 6);
+}
+
+#[test]
+fn bad_robot_input_is_one_line_naming_file_and_field() {
+    let check = |args: &[&str], want: &str| {
+        let (code, stdout, stderr) = kinolab(args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(stdout.is_empty());
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(stderr.contains(want), "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"));
+    };
+    let negative = robot_file(
+        "negative.robot.json",
+        r#"{"wheels":[{"kind":"fixed","alpha_deg":0,"beta_deg":0,"l":0.2,"radius":-0.1}]}"#,
+    );
+    check(
+        &["analyze", &negative],
+        "negative.robot.json: wheels[0].radius: must be above 0, got -0.1",
+    );
+    let unknown = robot_file(
+        "unknown.robot.json",
+        r#"{"wheels":[{"kind":"fixed","alpha_deg":0,"beta_deg":0,"l":0.2,"radius":0.1,"color":"red"}]}"#,
+    );
+    check(
+        &["analyze", &unknown],
+        "unknown.robot.json: wheels[0].color: unknown field `color`",
+    );
+    let malformed = robot_file("malformed.robot.json", "{\"wheels\": [");
+    check(&["analyze", &malformed], "malformed.robot.json:");
+    check(
+        &["analyze", "/no/such/robot.json"],
+        "/no/such/robot.json: cannot read",
+    );
+    let good = robot_file("good.robot.json", EVERY_WHEEL_KIND);
+    check(
+        &["drive", &good, "--twist", "1,NaN,0"],
+        "--twist: `NaN` is not a finite number",
+    );
+    check(
+        &["drive", &good, "--twist", "1,0"],
+        "--twist: expected three numbers",
+    );
+    check(
+        &["drive", &good, "--wheels", "1,2"],
+        "--wheels: expected 6 spins",
+    );
+    check(&["drive", &good], "give --twist");
+    check(
+        &[
+            "drive",
+            &good,
+            "--twist",
+            "1,0,0",
+            "--wheels",
+            "1,2,3,4,5,6",
+        ],
+        "not both",
+    );
+    check(
+        &["analyze", "catalogue:hovercraft"],
+        "no catalogue robot \"hovercraft\"",
+    );
+}
+
+#[test]
+fn robots_lists_the_catalogue_and_prints_files() {
+    let out = json(&["robots"]);
+    let ids: Vec<&str> = out["robots"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["id"].as_str().unwrap())
+        .collect();
+    assert!(ids.contains(&"synchro-drive") && ids.contains(&"rocker-bogie"));
+    let file = json(&["robots", "ackermann-car"]);
+    assert_eq!(file["wheels"][2]["steer_group"], "linkage");
+    let path = robot_file("car.robot.json", &file.to_string());
+    assert_eq!(json(&["analyze", &path])["degree_of_maneuverability"], 2);
+}

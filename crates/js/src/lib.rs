@@ -5,6 +5,8 @@
 //! await init();
 //! kinolab.legEvents(6);                                  // "39916800"
 //! kinolab.staticStability([0, 0], [[1, 1], [-1, 1], [0, -1]]);
+//! kinolab.analyzeRobot("tricycle").degree_of_maneuverability; // 2
+//! kinolab.driveWheels("f,-90,180,1,1;f,90,0,1,1", [4, 2]).twist; // [3, 0, 1]
 //! ```
 //!
 //! Every function computes with the same core crates as the lab and the
@@ -152,4 +154,94 @@ pub fn check_lesson(file: &str, markdown: &str) -> Result<JsValue, JsError> {
         blocks,
     };
     to_js(&describe(file.to_owned(), &lesson))
+}
+
+// ---------------------------------------------------------------- wheels
+
+/// A robot from JavaScript: a robot-file object, a robot file as JSON text,
+/// a compact layout code (`f,90,0,0.25,0.1;...`) or a catalogue id.
+fn chassis(robot: JsValue) -> Result<kinolab_wheels::Chassis, JsError> {
+    use kinolab_wheels::{Chassis, catalogue};
+    let fail = |e: kinolab_wheels::WheelsError| JsError::new(&format!("robot: {e}"));
+    if let Some(text) = robot.as_string() {
+        let text = text.trim();
+        return if text.starts_with('{') {
+            Chassis::from_json(text).map_err(fail)
+        } else if text.contains(',') {
+            Chassis::from_compact("layout", text).map_err(fail)
+        } else {
+            catalogue::robot(text).map_err(fail)
+        };
+    }
+    let value: serde_json::Value = from_js("robot", robot)?;
+    Chassis::from_json(&value.to_string()).map_err(fail)
+}
+
+fn json_to_js(value: &serde_json::Value) -> Result<JsValue, JsError> {
+    value
+        .serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(|e| JsError::new(&format!("result: {e}")))
+}
+
+/// The catalogue: `[{ id, name, summary }]`.
+#[wasm_bindgen]
+pub fn robots() -> Result<JsValue, JsError> {
+    let list: Vec<serde_json::Value> = kinolab_wheels::catalogue::CATALOGUE
+        .iter()
+        .map(|e| serde_json::json!({ "id": e.id, "name": e.name, "summary": e.summary }))
+        .collect();
+    json_to_js(&serde_json::Value::Array(list))
+}
+
+/// A catalogue robot as a robot-file object (degrees, as people write them).
+#[wasm_bindgen(js_name = robotFile)]
+pub fn robot_file(robot: JsValue) -> Result<JsValue, JsError> {
+    let text = chassis(robot)?.to_json();
+    let value: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| JsError::new(&format!("robot: {e}")))?;
+    json_to_js(&value)
+}
+
+/// What `kinolab analyze` prints: `{ rank_c1, degree_of_mobility,
+/// degree_of_steerability, degree_of_maneuverability, dof, holonomic, icr, … }`.
+#[wasm_bindgen(js_name = analyzeRobot)]
+pub fn analyze_robot(robot: JsValue) -> Result<JsValue, JsError> {
+    json_to_js(&kinolab_wheels::report::analysis(&chassis(robot)?))
+}
+
+/// Inverse kinematics, as `kinolab drive --twist`: `twist` is
+/// `[vx, vy, omega]` in the robot frame; `theta` (optional, rad) adds the
+/// inertial motion.
+#[wasm_bindgen(js_name = driveTwist)]
+pub fn drive_twist(robot: JsValue, twist: JsValue, theta: Option<f64>) -> Result<JsValue, JsError> {
+    let chassis = chassis(robot)?;
+    let [x, y, w]: [f64; 3] = from_js("twist", twist)?;
+    let report =
+        kinolab_wheels::report::inverse(&chassis, kinolab_wheels::Vector3::new(x, y, w), theta)
+            .map_err(|e| JsError::new(&e.to_string()))?;
+    json_to_js(&report)
+}
+
+/// Forward kinematics, as `kinolab drive --wheels`: one spin per wheel
+/// (rad/s), `null` where unknown.
+#[wasm_bindgen(js_name = driveWheels)]
+pub fn drive_wheels(
+    robot: JsValue,
+    spins: JsValue,
+    theta: Option<f64>,
+) -> Result<JsValue, JsError> {
+    let chassis = chassis(robot)?;
+    let spins: Vec<Option<f64>> = from_js("spins", spins)?;
+    let report = kinolab_wheels::report::forward(&chassis, &spins, theta)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    json_to_js(&report)
+}
+
+/// Differential drive closed form: `{ v, omega, radius }` (radius `null`
+/// when driving straight) from the wheel separation and ground speeds.
+#[wasm_bindgen(js_name = differentialDrive)]
+pub fn differential_drive(track: f64, v_left: f64, v_right: f64) -> Result<JsValue, JsError> {
+    let m = kinolab_wheels::closed_form::differential_drive(track, v_left, v_right)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    json_to_js(&serde_json::json!({ "v": m.v, "omega": m.omega, "radius": m.radius }))
 }

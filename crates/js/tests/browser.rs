@@ -66,3 +66,40 @@ fn pick_cell_through_the_js_api() {
     assert!((get(&run, "scriptedSuccess").as_f64().unwrap() - 0.25).abs() < 1e-12);
     assert_eq!(get(&run, "sensingGrasped").as_f64(), Some(10.0));
 }
+
+#[wasm_bindgen_test]
+fn wheel_analysis_through_the_js_api() {
+    let a = kinolab_js::analyze_robot(JsValue::from_str("synchro-drive")).unwrap();
+    assert_eq!(get(&a, "degree_of_mobility").as_f64(), Some(1.0));
+    assert_eq!(get(&a, "degree_of_steerability").as_f64(), Some(1.0));
+    assert_eq!(get(&a, "dof").as_f64(), Some(2.0));
+    assert_eq!(
+        get(&get(&a, "icr"), "kind").as_string().unwrap(),
+        "infinity"
+    );
+    // A robot-file object works as well as an id.
+    let file = kinolab_js::robot_file(JsValue::from_str("tricycle")).unwrap();
+    let a = kinolab_js::analyze_robot(file).unwrap();
+    assert_eq!(get(&a, "degree_of_maneuverability").as_f64(), Some(2.0));
+    let bad = kinolab_js::analyze_robot(JsValue::from_str("f,90,0,0.25,0"))
+        .err()
+        .unwrap();
+    let message: JsValue = bad.into();
+    assert!(format!("{message:?}").contains("radius"));
+}
+
+#[wasm_bindgen_test]
+fn siegwart_example_through_the_js_api() {
+    let robot = JsValue::from_str("f,-90,180,1,1;f,90,0,1,1");
+    let spins = serde_wasm_bindgen::to_value(&[Some(4.0), Some(2.0)]).unwrap();
+    let fk =
+        kinolab_js::drive_wheels(robot.clone(), spins, Some(std::f64::consts::FRAC_PI_2)).unwrap();
+    let inertial = get(&fk, "twist_inertial");
+    assert!((get(&inertial, "1").as_f64().unwrap() - 3.0).abs() < 1e-12);
+    assert!((get(&inertial, "2").as_f64().unwrap() - 1.0).abs() < 1e-12);
+    let twist = serde_wasm_bindgen::to_value(&[0.0, 1.0, 0.0]).unwrap();
+    let ik = kinolab_js::drive_twist(robot, twist, None).unwrap();
+    assert_eq!(get(&ik, "feasible").as_bool(), Some(false));
+    let dd = kinolab_js::differential_drive(0.5, 0.2, 0.4).unwrap();
+    assert!((get(&dd, "omega").as_f64().unwrap() - 0.4).abs() < 1e-12);
+}

@@ -7,7 +7,7 @@ use serde::Serialize;
 use crate::analysis::line_row;
 use crate::chassis::{Chassis, group_meeting_point, nearest_half_turn};
 use crate::error::{WheelsError, finite};
-use crate::wheel::{SlidingExtra, Wheel, WheelKind};
+use crate::wheel::{SlidingExtra, Wheel, WheelKind, wrap};
 
 /// What one wheel must do for a requested chassis twist.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -80,7 +80,8 @@ impl Chassis {
                         }
                         command(rolling_spin, w.beta, 0.0)
                     }
-                    (WheelKind::Steered | WheelKind::Spherical, _) => align(w, &twist),
+                    (WheelKind::Steered, _) => align(w, &twist),
+                    (WheelKind::Spherical, _) => roll_ball(w, &twist),
                     (_, SlidingExtra::SteerRate { offset }) => {
                         command(rolling_spin, w.beta, -rows.sliding.dot(&twist) / offset)
                     }
@@ -153,6 +154,17 @@ fn align(w: &Wheel, twist: &Vector3<f64>) -> WheelCommand {
     steered.beta = beta;
     let [tx, ty] = steered.rolling_direction();
     command((tx * ux + ty * uy) / w.radius, beta, 0.0)
+}
+
+/// A ball rolls the way its contact point moves: report that direction as
+/// its β and a spin that is never negative.
+fn roll_ball(w: &Wheel, twist: &Vector3<f64>) -> WheelCommand {
+    let [ux, uy] = w.contact_velocity(twist);
+    let speed = ux.hypot(uy);
+    if speed <= 1e-12 * (1.0 + twist.norm()) {
+        return command(0.0, w.beta, 0.0);
+    }
+    command(speed / w.radius, wrap(ux.atan2(-uy) - w.alpha), 0.0)
 }
 
 /// Forward kinematics: the chassis twist that best explains the spins.

@@ -21,6 +21,7 @@ pub mod closed_form;
 mod error;
 mod file;
 mod kinematics;
+pub mod report;
 mod span;
 mod wheel;
 

@@ -133,7 +133,10 @@ fn a_stuck_layout_names_the_wheel_that_disagrees() {
     .unwrap();
     let d = cart.disagreement().unwrap();
     assert_eq!(d.agree, vec![0, 1, 2, 3]);
-    assert_eq!(d.disagree.iter().map(|(i, _)| *i).collect::<Vec<_>>(), vec![4]);
+    assert_eq!(
+        d.disagree.iter().map(|(i, _)| *i).collect::<Vec<_>>(),
+        vec![4]
+    );
     // Without the fourth wheel the turntable spins about P.
     let turntable =
         Chassis::from_compact("t", "f,90,0,0.3,0.1;f,210,0,0.3,0.1;f,330,0,0.3,0.1").unwrap();
