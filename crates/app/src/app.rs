@@ -9,7 +9,7 @@ use crate::images::ImageCache;
 use crate::lesson_view::{LessonState, WidgetSlot, blocks_ui, error_box, inline_ui};
 use crate::progress::Progress;
 use crate::quiz_view::QuizState;
-use crate::route::Page;
+use crate::route::{self, Page};
 use crate::theme;
 
 /// Narrower than this, the lesson list starts closed.
@@ -28,6 +28,11 @@ pub struct KinolabApp {
     notice: Option<String>,
     quizzes: HashMap<String, QuizState>,
     widgets: HashMap<String, WidgetSlot>,
+    /// Widget states from the link that opened the page, by widget id.
+    restore: HashMap<String, String>,
+    /// The hash that reflects the widgets' states, to replace (not push)
+    /// in the browser's address bar.
+    state_hash: Option<String>,
     images: ImageCache,
     sidebar_open: Option<bool>,
     /// The URL hash the app wants the browser to show, once.
@@ -60,6 +65,8 @@ impl KinolabApp {
             notice: notice.map(|n| n.0),
             quizzes: HashMap::new(),
             widgets: HashMap::new(),
+            restore: HashMap::new(),
+            state_hash: None,
             images: ImageCache::default(),
             sidebar_open: None,
             pending_hash: None,
@@ -92,10 +99,41 @@ impl KinolabApp {
     /// buttons and typed links come through here).
     pub fn follow_hash(&mut self, hash: &str) {
         let page = Page::from_hash(hash);
+        if let Page::Lesson(address) = &page {
+            for (n, state) in route::widget_states(hash) {
+                self.restore.insert(format!("{address}@w{n}"), state);
+            }
+        }
         if page != self.page {
             self.open(page);
         }
         self.pending_hash = None;
+    }
+
+    /// The hash that would reproduce the current lesson's widgets, when it
+    /// changed since last asked. The browser should replace its address with
+    /// it without adding a history entry.
+    pub fn take_state_hash(&mut self) -> Option<String> {
+        let Page::Lesson(address) = &self.page else {
+            return None;
+        };
+        let prefix = format!("{address}@w");
+        let mut states: Vec<(usize, String)> = self
+            .widgets
+            .iter()
+            .filter_map(|(id, slot)| {
+                let n = id.strip_prefix(&prefix)?.parse().ok()?;
+                let state = slot.as_ref().ok()?.state()?;
+                Some((n, state))
+            })
+            .collect();
+        states.sort();
+        let hash = route::lesson_hash(address, &states);
+        if self.state_hash.as_deref() == Some(hash.as_str()) {
+            return None;
+        }
+        self.state_hash = Some(hash.clone());
+        Some(hash)
     }
 
     /// Open a page from inside the app; the URL hash follows.
@@ -338,6 +376,7 @@ impl KinolabApp {
             address,
             quizzes: &mut self.quizzes,
             widgets: &mut self.widgets,
+            restore: &mut self.restore,
             progress: &mut self.progress,
             progress_changed: &mut changed,
             images: &mut self.images,

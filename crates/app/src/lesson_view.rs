@@ -23,6 +23,8 @@ pub struct LessonState<'a> {
     pub address: &'a str,
     pub quizzes: &'a mut HashMap<String, QuizState>,
     pub widgets: &'a mut HashMap<String, WidgetSlot>,
+    /// Widget states from a link, by widget id, applied once.
+    pub restore: &'a mut HashMap<String, String>,
     pub progress: &'a mut Progress,
     pub progress_changed: &'a mut bool,
     pub images: &'a mut ImageCache,
@@ -139,7 +141,7 @@ fn block_ui(
         Block::Widget(spec) => {
             let id = format!("{}@w{}", state.address, *widget_no);
             *widget_no += 1;
-            widget_ui(ui, &id, spec, state.widgets);
+            widget_ui(ui, &id, spec, state.widgets, state.restore);
             ui.add_space(10.0);
         }
         Block::Quiz(quiz) => {
@@ -320,10 +322,14 @@ fn widget_ui(
     id: &str,
     spec: &WidgetSpec,
     slots: &mut HashMap<String, WidgetSlot>,
+    restore: &mut HashMap<String, String>,
 ) {
     let slot = slots
         .entry(id.to_owned())
         .or_insert_with(|| widgets::create(spec));
+    if let (Ok(widget), Some(saved)) = (slot.as_mut(), restore.remove(id)) {
+        widget.restore(&saved);
+    }
     egui::Frame::group(ui.style())
         .inner_margin(10.0)
         .corner_radius(6.0)

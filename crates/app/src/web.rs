@@ -48,6 +48,15 @@ pub fn after_frame(app: &mut KinolabApp) {
         }
         LAST_HASH.set(Some(current_hash()));
     }
+    if let Some(hash) = app.take_state_hash()
+        && current_hash() != hash
+        && let Some(w) = window()
+        && let Ok(history) = w.history()
+    {
+        // Replace, not push: dragging a wheel must not fill the back button.
+        let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&hash));
+        LAST_HASH.set(Some(current_hash()));
+    }
     if let Some(json) = app.take_dirty_progress() {
         store_progress(&json);
     }

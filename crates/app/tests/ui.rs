@@ -7,11 +7,16 @@ use kinolab_app::KinolabApp;
 use kinolab_app::route::Page;
 
 fn harness(app: KinolabApp) -> Harness<'static, KinolabApp> {
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1280.0, 16000.0))
-        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let mut harness = animated(app);
     harness.run();
     harness
+}
+
+/// For pages with a running animation: the caller steps frames itself.
+fn animated(app: KinolabApp) -> Harness<'static, KinolabApp> {
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 16000.0))
+        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app)
 }
 
 const LESSON: &str = "automation/open-and-closed-worlds";
@@ -148,7 +153,8 @@ fn every_lesson_renders_without_widget_errors() {
     let mut h = harness(app);
     for address in addresses {
         h.state_mut().follow_hash(&format!("#/{address}"));
-        h.run();
+        // The drive widget animates, so step a fixed number of frames.
+        h.run_steps(6);
         assert!(
             h.query_by_label_contains("cannot be shown").is_none(),
             "{address} shows an error box"
@@ -170,4 +176,40 @@ fn the_theme_toggle_switches_and_is_remembered() {
     h.run();
     assert_eq!(h.state().progress().dark, Some(!dark_before));
     assert_eq!((h.ctx.theme() == egui::Theme::Dark), !dark_before);
+}
+
+const ICR_LESSON: &str = "#/wheeled-locomotion/icr-and-holonomy";
+
+#[test]
+fn the_disagreeing_wheel_challenge_is_graded_by_the_core() {
+    let mut h = animated(KinolabApp::new(None, ICR_LESSON));
+    h.run_steps(4);
+    h.get_by_label_contains("Challenge: Place the ICR at (0, 2).");
+    // The catalogue tricycle starts straight: its ICR is at infinity.
+    h.get_by_label_contains("The ICR is at infinity");
+    // Mark the right wheel and check; then add a wrong one.
+    h.get_by_label("Wheel 5 (fixed)").click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Right: wheel 5 misses the point");
+    let wheels = h.get_all_by_label("Wheel 1 (fixed)").count();
+    assert!(wheels >= 2, "tricycle and cart both have a wheel 1");
+    h.get_all_by_label("Wheel 1 (fixed)").last().unwrap().click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Not yet: wheel 1 agrees with the majority");
+}
+
+#[test]
+fn a_shared_layout_in_the_link_is_restored() {
+    let link = "#/wheeled-locomotion/wheel-kinds?w0=f,90,0,0.25,0.1;f,-90,180,0.25,0.1;w,0,0,0.3,0.05,g=0";
+    let mut h = animated(KinolabApp::new(None, link));
+    h.run_steps(4);
+    // The lesson starts from the six-wheel example; the link has three.
+    h.get_by_label("Wheel 3 (swedish)");
+    assert!(h.query_by_label("Wheel 6 (spherical)").is_none());
+    // The app offers the same link back for the address bar.
+    assert_eq!(h.state_mut().take_state_hash().as_deref(), Some(link));
 }

@@ -65,6 +65,33 @@ fn pick_cell() -> f64 {
     }
 }
 
+/// The Ackermann car: four wheels, a linkage, a fixed axle; built once.
+fn car() -> &'static kinolab_wheels::Chassis {
+    static CAR: std::sync::OnceLock<Option<kinolab_wheels::Chassis>> = std::sync::OnceLock::new();
+    CAR.get_or_init(|| kinolab_wheels::catalogue::robot("ackermann-car").ok())
+        .as_ref()
+        .unwrap_or_else(|| unreachable!("the catalogue car is tested to build"))
+}
+
+fn wheels_analyze() -> f64 {
+    let a = black_box(car()).analyze();
+    (a.maneuverability + a.dof) as f64
+}
+
+fn wheels_inverse() -> f64 {
+    let twist = kinolab_wheels::Vector3::new(1.0, 0.0, 0.4);
+    black_box(car())
+        .inverse(black_box(twist))
+        .map_or(f64::NAN, |ik| ik.wheels.iter().map(|w| w.spin).sum())
+}
+
+fn wheels_forward() -> f64 {
+    let spins = [Some(5.0), Some(6.0), Some(6.2), Some(7.1)];
+    black_box(car())
+        .forward(black_box(&spins))
+        .map_or(f64::NAN, |fk| fk.twist[0] + fk.residual)
+}
+
 /// Every kernel, in report order.
 pub const KERNELS: &[Kernel] = &[
     Kernel {
@@ -86,6 +113,18 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "pick_cell_100_parts",
         run: pick_cell,
+    },
+    Kernel {
+        name: "wheels_analyze_4",
+        run: wheels_analyze,
+    },
+    Kernel {
+        name: "wheels_inverse_4",
+        run: wheels_inverse,
+    },
+    Kernel {
+        name: "wheels_forward_4",
+        run: wheels_forward,
     },
 ];
 

@@ -131,6 +131,20 @@ impl Chassis {
 /// The constraint a multi-wheel steering linkage puts on the ICR, as a
 /// sliding-like row, or `None` when it adds nothing to the fixed wheels.
 fn linkage_row(wheels: &[Wheel], group: &[usize], rank_c1f: usize) -> Option<Vector3<f64>> {
+    if rank_c1f >= 2 {
+        // The fixed wheels already pin the ICR; no linkage can add a limit.
+        return None;
+    }
+    if rank_c1f == 1 {
+        // Parallel wheels (a belt) forbid turning; any other linkage keeps
+        // its meeting point on the fixed axle, which C₁f already says.
+        let [ax, ay] = wheels[group[0]].axle();
+        let parallel = group[1..].iter().all(|&i| {
+            let [bx, by] = wheels[i].axle();
+            (ax * by - ay * bx).abs() < RANK_TOLERANCE
+        });
+        return parallel.then(|| Vector3::new(0.0, 0.0, 1.0));
+    }
     match group_meeting_point(wheels, group) {
         // A belt keeps the wheels parallel: the chassis never turns.
         None => Some(Vector3::new(0.0, 0.0, 1.0)),
@@ -177,7 +191,8 @@ pub fn lie_closure(motions: Span3) -> Span3 {
     let mut span = motions;
     loop {
         let before = span.rank();
-        let basis: Vec<Vector3<f64>> = span.basis().to_vec();
+        let basis = span;
+        let basis = basis.basis();
         for (i, u) in basis.iter().enumerate() {
             for w in &basis[i + 1..] {
                 span.add(bracket(u, w));

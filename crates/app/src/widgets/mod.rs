@@ -4,15 +4,28 @@
 //! names in [`REGISTRY`]; its `key: value` lines are the parameters. Every
 //! number a widget shows comes from a core crate, never from the UI.
 
+mod chassis_view;
+mod frame_rotation;
 mod leg_events;
 mod scripted_vs_sensing;
 mod support_polygon;
+mod wheel_drive;
+mod wheel_workbench;
 
 use kinolab_lessons::WidgetSpec;
 
 /// A widget living inside a lesson.
 pub trait LabWidget {
     fn ui(&mut self, ui: &mut egui::Ui);
+
+    /// What a link must carry to reproduce this widget as the learner left
+    /// it (URL-safe text), or `None` while it is as the lesson set it up.
+    fn state(&self) -> Option<String> {
+        None
+    }
+
+    /// Take back a [`LabWidget::state`] from a link; ignore what does not parse.
+    fn restore(&mut self, _state: &str) {}
 }
 
 type Constructor = fn(&WidgetSpec) -> Result<Box<dyn LabWidget>, String>;
@@ -33,6 +46,21 @@ pub const REGISTRY: &[(&str, Constructor, &str)] = &[
         "scripted-vs-sensing",
         scripted_vs_sensing::create,
         "a pick-and-place cell in a closed and an open world",
+    ),
+    (
+        "wheel-workbench",
+        wheel_workbench::create,
+        "place wheels on a chassis; see C1, rank, the three degrees and the ICR",
+    ),
+    (
+        "wheel-drive",
+        wheel_drive::create,
+        "drive a robot by wheel spins or by twist; trail, ICR, wheel velocities",
+    ),
+    (
+        "frame-rotation",
+        frame_rotation::create,
+        "inertial and robot frames and the rotation R(theta) between them",
     ),
 ];
 
