@@ -195,7 +195,10 @@ fn the_disagreeing_wheel_challenge_is_graded_by_the_core() {
     h.get_by_label_contains("Right: wheel 5 misses the point");
     let wheels = h.get_all_by_label("Wheel 1 (fixed)").count();
     assert!(wheels >= 2, "tricycle and cart both have a wheel 1");
-    h.get_all_by_label("Wheel 1 (fixed)").last().unwrap().click();
+    h.get_all_by_label("Wheel 1 (fixed)")
+        .last()
+        .unwrap()
+        .click();
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
@@ -204,7 +207,8 @@ fn the_disagreeing_wheel_challenge_is_graded_by_the_core() {
 
 #[test]
 fn a_shared_layout_in_the_link_is_restored() {
-    let link = "#/wheeled-locomotion/wheel-kinds?w0=f,90,0,0.25,0.1;f,-90,180,0.25,0.1;w,0,0,0.3,0.05,g=0";
+    let link =
+        "#/wheeled-locomotion/wheel-kinds?w0=f,90,0,0.25,0.1;f,-90,180,0.25,0.1;w,0,0,0.3,0.05,g=0";
     let mut h = animated(KinolabApp::new(None, link));
     h.run_steps(4);
     // The lesson starts from the six-wheel example; the link has three.

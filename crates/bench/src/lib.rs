@@ -78,6 +78,16 @@ fn wheels_analyze() -> f64 {
     (a.maneuverability + a.dof) as f64
 }
 
+/// Validation, the trigonometry of every row, then the analysis: what the
+/// workbench pays when a learner drags a wheel.
+fn wheels_build_analyze() -> f64 {
+    let wheels = black_box(car()).wheels().to_vec();
+    match kinolab_wheels::Chassis::new("car", wheels) {
+        Ok(chassis) => chassis.analyze().maneuverability as f64,
+        Err(_) => f64::NAN,
+    }
+}
+
 fn wheels_inverse() -> f64 {
     let twist = kinolab_wheels::Vector3::new(1.0, 0.0, 0.4);
     black_box(car())
@@ -117,6 +127,10 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "wheels_analyze_4",
         run: wheels_analyze,
+    },
+    Kernel {
+        name: "wheels_build_analyze_4",
+        run: wheels_build_analyze,
     },
     Kernel {
         name: "wheels_inverse_4",

@@ -49,7 +49,7 @@ pub struct Analysis {
     /// Pose dimensions the robot can reach, from the Lie brackets of every
     /// motion it can make at some reachable steering.
     pub dof: usize,
-    /// DDOF = DOF.
+    /// DDOF = DOF, for a robot that can move at all (DOF > 0).
     pub holonomic: bool,
     pub icr: Icr,
     /// Chassis twists allowed now: N(C₁(β_s)).
@@ -73,13 +73,13 @@ impl Chassis {
         let mut c1s = Span3::empty();
         let mut c1 = Span3::empty();
         let mut first_row = None;
-        for w in wheels {
+        for (w, rows) in wheels.iter().zip(self.rows()) {
             let is_fixed = match w.kind {
                 WheelKind::Fixed => true,
                 WheelKind::Steered => false,
                 _ => continue,
             };
-            let row = w.rows().sliding;
+            let row = rows.sliding;
             first_row.get_or_insert(row);
             if is_fixed {
                 c1f.add(row);
@@ -120,7 +120,7 @@ impl Chassis {
             steerability,
             maneuverability: mobility + steerability,
             dof,
-            holonomic: mobility == dof,
+            holonomic: dof > 0 && mobility == dof,
             icr,
             admissible,
             reachable,

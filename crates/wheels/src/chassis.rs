@@ -4,7 +4,7 @@
 use nalgebra::{DMatrix, Vector3};
 
 use crate::error::{WheelsError, finite};
-use crate::wheel::{Wheel, WheelKind, wrap};
+use crate::wheel::{Wheel, WheelKind, WheelRows, wrap};
 
 /// The most wheels a chassis may have; keeps every computation small.
 pub const MAX_WHEELS: usize = 64;
@@ -27,6 +27,9 @@ pub struct SteeringInput {
 pub struct Chassis {
     name: String,
     wheels: Vec<Wheel>,
+    /// Each wheel's constraint rows, computed once: a chassis never changes
+    /// (steering makes a new one), and the trigonometry is most of the work.
+    rows: Vec<WheelRows>,
     inputs: Vec<SteeringInput>,
 }
 
@@ -63,9 +66,11 @@ impl Chassis {
             }
         }
         let inputs = steering_inputs(&wheels);
+        let rows = wheels.iter().map(Wheel::rows).collect();
         Ok(Self {
             name: name.into(),
             wheels,
+            rows,
             inputs,
         })
     }
@@ -76,6 +81,11 @@ impl Chassis {
 
     pub fn wheels(&self) -> &[Wheel] {
         &self.wheels
+    }
+
+    /// The constraint rows of every wheel, in wheel order.
+    pub fn rows(&self) -> &[WheelRows] {
+        &self.rows
     }
 
     /// The steering inputs: one per group, one per ungrouped steered wheel.
@@ -99,17 +109,14 @@ impl Chassis {
 
     /// C₁f: the sliding rows of the fixed standard wheels.
     pub fn c1f(&self) -> DMatrix<f64> {
-        self.stack(
-            self.indices(WheelKind::Fixed)
-                .map(|i| self.wheels[i].rows().sliding),
-        )
+        self.stack(self.indices(WheelKind::Fixed).map(|i| self.rows[i].sliding))
     }
 
     /// C₁s(β_s): the sliding rows of the steered standard wheels.
     pub fn c1s(&self) -> DMatrix<f64> {
         self.stack(
             self.indices(WheelKind::Steered)
-                .map(|i| self.wheels[i].rows().sliding),
+                .map(|i| self.rows[i].sliding),
         )
     }
 
@@ -118,7 +125,7 @@ impl Chassis {
         self.stack(
             self.indices(WheelKind::Fixed)
                 .chain(self.indices(WheelKind::Steered))
-                .map(|i| self.wheels[i].rows().sliding),
+                .map(|i| self.rows[i].sliding),
         )
     }
 
@@ -127,7 +134,7 @@ impl Chassis {
         self.stack(
             self.indices(WheelKind::Fixed)
                 .chain(self.indices(WheelKind::Steered))
-                .map(|i| self.wheels[i].rows().rolling),
+                .map(|i| self.rows[i].rolling),
         )
     }
 

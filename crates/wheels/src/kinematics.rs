@@ -63,9 +63,9 @@ impl Chassis {
         let wheels: Vec<WheelCommand> = self
             .wheels()
             .iter()
+            .zip(self.rows())
             .enumerate()
-            .map(|(i, w)| {
-                let rows = w.rows();
+            .map(|(i, (w, rows))| {
                 let rolling_spin = rows.rolling.dot(&twist) / rows.spin_gain;
                 match (w.kind, rows.sliding_extra) {
                     (WheelKind::Fixed, _) => {
@@ -93,11 +93,21 @@ impl Chassis {
                 }
             })
             .collect();
-        let rank_c1f = self.analyze().rank_c1f;
+        let mut rank_c1f = None;
         for input in self.steering_inputs() {
             if input.wheels.len() < 2 {
                 continue;
             }
+            let rank_c1f = *rank_c1f.get_or_insert_with(|| {
+                crate::span::Span3::of(
+                    self.wheels()
+                        .iter()
+                        .zip(self.rows())
+                        .filter(|(w, _)| w.kind == WheelKind::Fixed)
+                        .map(|(_, r)| r.sliding),
+                )
+                .rank()
+            });
             let row = match group_meeting_point(self.wheels(), &input.wheels) {
                 None => Vector3::new(0.0, 0.0, 1.0),
                 Some(_) if rank_c1f > 0 => continue,
@@ -209,8 +219,7 @@ impl Chassis {
             b_norm2 += b * b;
             used += 1;
         };
-        for (i, (w, spin)) in self.wheels().iter().zip(spins).enumerate() {
-            let rows = w.rows();
+        for (i, ((w, rows), spin)) in self.wheels().iter().zip(self.rows()).zip(spins).enumerate() {
             if let Some(spin) = spin {
                 finite(format!("wheels[{i}] spin"), *spin)?;
                 if w.kind != WheelKind::Spherical {
@@ -236,8 +245,7 @@ impl Chassis {
         };
         // ‖Av − b‖² = vᵀ(AᵀA)v − 2 vᵀ(Aᵀb) + bᵀb, recomputed directly for accuracy.
         let mut residual2 = 0.0;
-        for (w, spin) in self.wheels().iter().zip(spins) {
-            let rows = w.rows();
+        for ((w, rows), spin) in self.wheels().iter().zip(self.rows()).zip(spins) {
             if let Some(spin) = spin
                 && w.kind != WheelKind::Spherical
             {

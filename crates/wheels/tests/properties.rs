@@ -103,7 +103,7 @@ proptest! {
         prop_assert!(a.ddof() <= a.maneuverability && a.maneuverability <= a.dof.max(a.maneuverability));
         prop_assert!(a.maneuverability <= 3 && a.steerability <= 2);
         prop_assert!(a.dof >= a.reachable.rank());
-        prop_assert_eq!(a.holonomic, a.ddof() == a.dof);
+        prop_assert_eq!(a.holonomic, a.dof > 0 && a.ddof() == a.dof);
         if a.mobility >= 1 {
             prop_assert!(a.maneuverability <= a.dof);
         }

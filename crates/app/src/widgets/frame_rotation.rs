@@ -30,7 +30,7 @@ fn fmt(v: f64) -> String {
 
 impl LabWidget for FrameRotation {
     fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        ui.vertical(|ui| {
             ui.add(
                 egui::Slider::new(&mut self.theta_deg, -180.0..=180.0)
                     .text("heading θ (°)")

@@ -195,7 +195,7 @@ impl Drive {
         });
         match self.mode {
             Mode::Twist => {
-                ui.horizontal_wrapped(|ui| {
+                ui.vertical(|ui| {
                     for (k, (label, range)) in [
                         ("forward (m/s)", 1.0),
                         ("sideways (m/s)", 1.0),
@@ -213,7 +213,7 @@ impl Drive {
                 });
             }
             Mode::Wheels => {
-                ui.horizontal_wrapped(|ui| {
+                ui.vertical(|ui| {
                     for (i, s) in self.spins.iter_mut().enumerate() {
                         if let Some(s) = s {
                             ui.add(
@@ -333,9 +333,10 @@ impl LabWidget for Drive {
             Icr::Infinity { .. } => "ICR at infinity: driving straight".to_owned(),
             _ => "standing still".to_owned(),
         };
+        let c = |x: f64| if x.abs() < 5e-3 { 0.0 } else { x };
         ui.label(format!(
             "Twist (forward, sideways, turn) = ({:.2} m/s, {:.2} m/s, {:.2} rad/s). {icr_text}. Pose x = {:.2} m, y = {:.2} m, θ = {:.0}°.",
-            twist.x, twist.y, twist.z, self.pose[0], self.pose[1], self.pose[2].to_degrees()
+            c(twist.x), c(twist.y), c(twist.z), c(self.pose[0]), c(self.pose[1]), c(self.pose[2].to_degrees())
         ));
         if self.mode == Mode::Twist
             && let Ok(ik) = self.chassis.inverse(twist)

@@ -546,7 +546,9 @@ impl Workbench {
                     }
                     ui.label(label);
                     let v = |r: kinolab_wheels::Vector3<f64>| {
-                        format!("[{:+.3} {:+.3} {:+.3}]", r.x, r.y, r.z)
+                        // Rounding noise would print as "-0.000".
+                        let c = |x: f64| if x.abs() < 5e-4 { 0.0 } else { x };
+                        format!("[{:+.3} {:+.3} {:+.3}]", c(r.x), c(r.y), c(r.z))
                     };
                     ui.label(mono(v(rows.rolling)));
                     ui.label(mono(format!("{:.3}", w.radius)));
