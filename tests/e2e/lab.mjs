@@ -63,6 +63,18 @@ try {
     await page.screenshot({ path: `${out}/home.png` });
   });
 
+  await check("a wheel layout shared in a link is kept in the address", async () => {
+    const layout = "f,90,0,0.25,0.1;f,-90,180,0.25,0.1;w,0,0,0.3,0.05,g=0";
+    await page.goto(`${server.url}#/wheeled-locomotion/wheel-kinds?w0=${layout}`);
+    assert.equal(await waitForLab(page), "wheeled-locomotion/wheel-kinds");
+    await page.waitForTimeout(500);
+    assert.ok((await page.evaluate(() => location.hash)).includes(`w0=${layout}`));
+    await page.reload();
+    assert.equal(await waitForLab(page), "wheeled-locomotion/wheel-kinds");
+    await page.waitForTimeout(300);
+    assert.ok((await page.evaluate(() => location.hash)).includes(`w0=${layout}`));
+  });
+
   await check("a lab opened once works offline", async () => {
     await page.evaluate(() => navigator.serviceWorker.ready);
     await page.reload();            // now controlled by the service worker, which caches
@@ -89,6 +101,9 @@ try {
     await embed.waitForFunction(() => document.documentElement.dataset.kinolabEmbedReady, null, { timeout: 30_000 });
     assert.equal(await embed.textContent("#legs-out"), "N = (2k − 1)! = 39916800");
     assert.match(await embed.textContent("#stability-out"), /^Statically stable, margin 18\.0 cm$/);
+    assert.equal(await embed.textContent("#robot-out"), "δm = 1, δs = 1, δM = 2, DOF = 3, not holonomic; ICR: infinity");
+    await embed.selectOption("#robot", "ackermann-car");
+    assert.equal(await embed.textContent("#robot-out"), "δm = 1, δs = 1, δM = 2, DOF = 3, not holonomic; ICR at (0.00, 2.50)");
     await embed.screenshot({ path: `${out}/embed.png`, fullPage: true });
   });
 

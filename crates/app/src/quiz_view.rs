@@ -126,7 +126,7 @@ fn answer_controls(
             for (i, option) in options.iter().enumerate() {
                 let selected = state.choice == Some(i);
                 let clicked = ui
-                    .horizontal(|ui| option_control(ui, option, selected, false, navigate))
+                    .horizontal_wrapped(|ui| option_control(ui, option, selected, false, navigate))
                     .inner;
                 if clicked {
                     state.choice = Some(i);
@@ -141,7 +141,7 @@ fn answer_controls(
             for (i, option) in options.iter().enumerate() {
                 let ticked = state.ticks[i];
                 let clicked = ui
-                    .horizontal(|ui| option_control(ui, option, ticked, true, navigate))
+                    .horizontal_wrapped(|ui| option_control(ui, option, ticked, true, navigate))
                     .inner;
                 if clicked {
                     state.ticks[i] = !ticked;

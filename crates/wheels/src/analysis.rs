@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use crate::chassis::{Chassis, group_meeting_point, intersect};
 use crate::span::{RANK_TOLERANCE, Span3};
-use crate::wheel::{Wheel, WheelKind};
+use crate::wheel::{Wheel, WheelKind, WheelRows};
 
 /// Where a layout's instantaneous centre of rotation can be, in the robot
 /// frame.
@@ -97,7 +97,7 @@ impl Chassis {
         let mut limits = c1f;
         for input in self.steering_inputs() {
             if input.wheels.len() > 1
-                && let Some(row) = linkage_row(wheels, &input.wheels, c1f.rank())
+                && let Some(row) = linkage_row(wheels, self.rows(), &input.wheels, c1f.rank())
             {
                 limits.add(row);
             }
@@ -130,7 +130,12 @@ impl Chassis {
 
 /// The constraint a multi-wheel steering linkage puts on the ICR, as a
 /// sliding-like row, or `None` when it adds nothing to the fixed wheels.
-fn linkage_row(wheels: &[Wheel], group: &[usize], rank_c1f: usize) -> Option<Vector3<f64>> {
+fn linkage_row(
+    wheels: &[Wheel],
+    rows: &[WheelRows],
+    group: &[usize],
+    rank_c1f: usize,
+) -> Option<Vector3<f64>> {
     if rank_c1f >= 2 {
         // The fixed wheels already pin the ICR; no linkage can add a limit.
         return None;
@@ -138,9 +143,12 @@ fn linkage_row(wheels: &[Wheel], group: &[usize], rank_c1f: usize) -> Option<Vec
     if rank_c1f == 1 {
         // Parallel wheels (a belt) forbid turning; any other linkage keeps
         // its meeting point on the fixed axle, which C₁f already says.
-        let [ax, ay] = wheels[group[0]].axle();
+        // The first two entries of a standard wheel's sliding row are its
+        // axle direction, already computed.
+        let axle = |i: usize| (rows[i].sliding.x, rows[i].sliding.y);
+        let (ax, ay) = axle(group[0]);
         let parallel = group[1..].iter().all(|&i| {
-            let [bx, by] = wheels[i].axle();
+            let (bx, by) = axle(i);
             (ax * by - ay * bx).abs() < RANK_TOLERANCE
         });
         return parallel.then(|| Vector3::new(0.0, 0.0, 1.0));

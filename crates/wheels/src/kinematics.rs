@@ -230,10 +230,13 @@ impl Chassis {
                 add(rows.sliding, 0.0);
             }
         }
-        let (twist, determined) = match normal.cholesky() {
-            Some(chol) if normal.determinant().abs() > 1e-12 * normal.norm().powi(3) => {
-                (chol.solve(&rhs), true)
-            }
+        // AᵀA is 3×3: its explicit inverse (cofactors over the determinant)
+        // is exact enough and fast everywhere; a near-singular one means the
+        // spins leave some motion free, and the SVD gives the smallest twist.
+        let scale = normal.norm();
+        let invertible = normal.determinant().abs() > 1e-12 * scale * scale * scale;
+        let (twist, determined) = match normal.try_inverse() {
+            Some(inverse) if invertible => (inverse * rhs, true),
             _ => {
                 let svd = normal.svd(true, true);
                 let eps = 1e-12 * svd.singular_values.max();
