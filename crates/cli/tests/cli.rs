@@ -133,17 +133,8 @@ fn robot_file(name: &str, text: &str) -> String {
     path.display().to_string()
 }
 
-const EVERY_WHEEL_KIND: &str = r#"{
-  "name": "every-wheel-kind",
-  "wheels": [
-    { "kind": "fixed",     "alpha_deg": 90,  "beta_deg": 0,   "l": 0.25, "radius": 0.1 },
-    { "kind": "fixed",     "alpha_deg": -90, "beta_deg": 180, "l": 0.25, "radius": 0.1 },
-    { "kind": "steered",   "alpha_deg": 0,   "beta_deg": 90,  "l": 0.60, "radius": 0.1 },
-    { "kind": "castor",    "alpha_deg": 180, "beta_deg": 0,   "l": 0.30, "radius": 0.05, "offset": 0.04 },
-    { "kind": "swedish",   "alpha_deg": 60,  "beta_deg": 0,   "l": 0.20, "radius": 0.05, "gamma_deg": 45 },
-    { "kind": "spherical", "alpha_deg": 0,   "l": 0.20, "radius": 0.05 }
-  ]
-}"#;
+/// The robot-file example of the command-line contract, verbatim.
+const EVERY_WHEEL_KIND: &str = kinolab_wheels::catalogue::EVERY_WHEEL_KIND;
 
 #[test]
 fn analyze_the_contract_example() {

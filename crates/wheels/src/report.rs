@@ -92,17 +92,12 @@ pub fn inverse(
             entry
         })
         .collect();
-    let mut out = json!({
+    let out = json!({
         "feasible": ik.feasible,
         "wheels": wheels,
         "violations": ik.violations,
-        "icr": twist_icr(&twist),
     });
-    if let Some(theta) = theta {
-        crate::error::finite("theta", theta)?;
-        out["twist_inertial"] = json!(to_inertial(theta, twist).as_slice());
-    }
-    Ok(tidy(out))
+    finish(out, twist, theta)
 }
 
 /// `kinolab drive --wheels`: forward kinematics.
@@ -113,13 +108,18 @@ pub fn forward(
 ) -> Result<Value, WheelsError> {
     let fk = chassis.forward(spins)?;
     let twist = Vector3::from(fk.twist);
-    let mut out = json!({
+    let out = json!({
         "twist": fk.twist,
         "residual": fk.residual,
         "consistent": fk.consistent,
         "determined": fk.determined,
-        "icr": twist_icr(&twist),
     });
+    finish(out, twist, theta)
+}
+
+/// Add the ICR of the twist and, given a heading, its inertial motion; tidy.
+fn finish(mut out: Value, twist: Vector3<f64>, theta: Option<f64>) -> Result<Value, WheelsError> {
+    out["icr"] = json!(twist_icr(&twist));
     if let Some(theta) = theta {
         crate::error::finite("theta", theta)?;
         out["twist_inertial"] = json!(to_inertial(theta, twist).as_slice());
