@@ -5,7 +5,7 @@ use egui::{RichText, Sense, Stroke, vec2};
 use kinolab_lessons::WidgetSpec;
 use kinolab_wheels::{Vector3, rotation};
 
-use super::{LabWidget, known_params, number_param};
+use super::{LabWidget, known_params, number_param, shown};
 use crate::theme;
 
 struct FrameRotation {
@@ -24,8 +24,7 @@ pub(super) fn create(spec: &WidgetSpec) -> Result<Box<dyn LabWidget>, String> {
 }
 
 fn fmt(v: f64) -> String {
-    let v = if v.abs() < 5e-4 { 0.0 } else { v };
-    format!("{v:+.3}")
+    format!("{:+.3}", shown(v, 5e-4))
 }
 
 impl LabWidget for FrameRotation {
@@ -148,7 +147,9 @@ impl LabWidget for FrameRotation {
             });
         ui.label(RichText::new(format!(
             "Forward {:.2} m/s, to the left {:.2} m/s, turning {:.2} rad/s, as the robot sees it. The inverse of R(θ) is its transpose: applying it brings the motion back.",
-            robot.x, robot.y, robot.z
+            shown(robot.x, 5e-3),
+            shown(robot.y, 5e-3),
+            shown(robot.z, 5e-3)
         )).small());
     }
 }

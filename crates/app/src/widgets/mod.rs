@@ -114,6 +114,12 @@ pub(crate) fn known_params(spec: &WidgetSpec, known: &[&str]) -> Result<(), Stri
     Ok(())
 }
 
+/// A value for display: rounding noise smaller than `resolution` becomes 0,
+/// so it never prints as "-0.00".
+pub(crate) fn shown(x: f64, resolution: f64) -> f64 {
+    if x.abs() < resolution { 0.0 } else { x }
+}
+
 /// Group digits in threes with thin spaces: 39 916 800.
 pub(crate) fn group_digits(n: u128) -> String {
     let digits = n.to_string();

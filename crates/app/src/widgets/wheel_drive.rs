@@ -10,7 +10,7 @@ use kinolab_wheels::{Chassis, Icr, Vector3, WheelKind, integrate, twist_icr};
 
 use super::chassis_view::{self as draw, View};
 use super::wheel_workbench::robot_param;
-use super::{LabWidget, known_params};
+use super::{LabWidget, known_params, shown};
 use crate::theme;
 
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -328,12 +328,14 @@ impl LabWidget for Drive {
         }
         draw::draw_icr(&painter, &view, &twist_icr(&twist), theme::accent(ui), rect);
 
+        let c = |x: f64| shown(x, 5e-3);
         let icr_text = match twist_icr(&twist) {
-            Icr::Point { x, y } => format!("ICR at ({x:.2}, {y:.2}) m in the robot frame"),
+            Icr::Point { x, y } => {
+                format!("ICR at ({:.2}, {:.2}) m in the robot frame", c(x), c(y))
+            }
             Icr::Infinity { .. } => "ICR at infinity: driving straight".to_owned(),
             _ => "standing still".to_owned(),
         };
-        let c = |x: f64| if x.abs() < 5e-3 { 0.0 } else { x };
         ui.label(format!(
             "Twist (forward, sideways, turn) = ({:.2} m/s, {:.2} m/s, {:.2} rad/s). {icr_text}. Pose x = {:.2} m, y = {:.2} m, θ = {:.0}°.",
             c(twist.x), c(twist.y), c(twist.z), c(self.pose[0]), c(self.pose[1]), c(self.pose[2].to_degrees())

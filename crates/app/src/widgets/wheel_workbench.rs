@@ -8,7 +8,7 @@ use kinolab_wheels::challenge::{Goal, Verdict, check_disagreeing};
 use kinolab_wheels::{Analysis, Chassis, Icr, Wheel, WheelKind, wrap};
 
 use super::chassis_view::{self as draw, View};
-use super::{LabWidget, known_params};
+use super::{LabWidget, known_params, shown};
 use crate::theme;
 
 /// Positions snap to this grid (metres) and angles to this step (degrees)
@@ -504,12 +504,20 @@ impl Workbench {
             Icr::Anywhere => "ICR: anywhere (no standard wheel objects).".to_owned(),
             Icr::Line { point, direction } => format!(
                 "ICR: on the line through ({:.2}, {:.2}) along ({:.2}, {:.2}).",
-                point[0], point[1], direction[0], direction[1]
+                shown(point[0], 5e-3),
+                shown(point[1], 5e-3),
+                shown(direction[0], 5e-3),
+                shown(direction[1], 5e-3)
             ),
-            Icr::Point { x, y } => format!("ICR: at ({x:.2}, {y:.2}) in the robot frame."),
+            Icr::Point { x, y } => format!(
+                "ICR: at ({:.2}, {:.2}) in the robot frame.",
+                shown(x, 5e-3),
+                shown(y, 5e-3)
+            ),
             Icr::Infinity { direction } => format!(
                 "ICR: at infinity. The robot can only translate, along ({:.2}, {:.2}).",
-                direction[0], direction[1]
+                shown(direction[0], 5e-3),
+                shown(direction[1], 5e-3)
             ),
             Icr::None => {
                 "ICR: none. The zero-motion lines share no point: the robot cannot move.".to_owned()
@@ -546,8 +554,7 @@ impl Workbench {
                     }
                     ui.label(label);
                     let v = |r: kinolab_wheels::Vector3<f64>| {
-                        // Rounding noise would print as "-0.000".
-                        let c = |x: f64| if x.abs() < 5e-4 { 0.0 } else { x };
+                        let c = |x: f64| shown(x, 5e-4);
                         format!("[{:+.3} {:+.3} {:+.3}]", c(r.x), c(r.y), c(r.z))
                     };
                     ui.label(mono(v(rows.rolling)));
