@@ -1,0 +1,89 @@
+//! Many starts at once: the textbook figure of trajectories from a circle of
+//! start poses, all ending at the goal.
+
+use serde::Serialize;
+
+use crate::error::{ControlError, positive};
+use crate::pose::Pose;
+use crate::sim::{Run, Trajectory};
+
+/// Most starts one batch may have.
+pub const MAX_STARTS: usize = 1000;
+
+/// `count` start poses evenly spaced on a circle of `radius` around the
+/// goal, all with world heading `heading` (the first on the goal's left,
+/// going counter-clockwise... from angle 0 of the goal frame).
+pub fn circle_starts(
+    goal: &Pose,
+    radius: f64,
+    count: usize,
+    heading: f64,
+) -> Result<Vec<Pose>, ControlError> {
+    positive("radius", radius)?;
+    crate::error::finite("heading", heading)?;
+    if count == 0 || count > MAX_STARTS {
+        return Err(ControlError::new(
+            "count",
+            format!("must be from 1 to {MAX_STARTS}, got {count}"),
+        ));
+    }
+    Ok((0..count)
+        .map(|i| {
+            let phi = std::f64::consts::TAU * i as f64 / count as f64;
+            let (s, c) = phi.sin_cos();
+            let mut p = Pose::new(radius * c, radius * s, 0.0).from_frame(goal);
+            p.theta = heading;
+            p
+        })
+        .collect())
+}
+
+/// One start's outcome, without its samples.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Outcome {
+    pub start: Pose,
+    pub reached: bool,
+    pub time_to_goal: Option<f64>,
+    pub final_pose: Pose,
+    pub final_position_error: f64,
+    pub path_length: f64,
+    pub backward: bool,
+}
+
+impl From<(&Pose, &Trajectory)> for Outcome {
+    fn from((start, t): (&Pose, &Trajectory)) -> Self {
+        Self {
+            start: *start,
+            reached: t.reached,
+            time_to_goal: t.time_to_goal,
+            final_pose: t.final_pose,
+            final_position_error: t.final_position_error,
+            path_length: t.path_length,
+            backward: t.backward,
+        }
+    }
+}
+
+/// Run `run` once from each of `starts` (its own start is ignored).
+pub fn batch(run: &Run, starts: &[Pose]) -> Result<Vec<Trajectory>, ControlError> {
+    if starts.len() > MAX_STARTS {
+        return Err(ControlError::new(
+            "starts",
+            format!("at most {MAX_STARTS} starts, got {}", starts.len()),
+        ));
+    }
+    let mut one = run.clone();
+    starts
+        .iter()
+        .enumerate()
+        .map(|(i, start)| {
+            one.start = *start;
+            one.simulate().map_err(|e| {
+                ControlError::new(
+                    e.field.replacen("start", &format!("starts[{i}]"), 1),
+                    e.message,
+                )
+            })
+        })
+        .collect()
+}

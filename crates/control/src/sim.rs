@@ -1,0 +1,447 @@
+//! The simulator: a unicycle (differential-drive) robot under a driver —
+//! the polar controller or an open-loop plan — integrated with classic
+//! fourth-order Runge–Kutta.
+//!
+//! The controller is part of the dynamics: it is evaluated at every RK4
+//! stage, so the closed loop is integrated as one continuous system and the
+//! error shrinks like dt⁴ (halving dt = 1e-3 moves no sample by more than
+//! 1e-6; a test checks it). In sampled-data mode the controller instead
+//! runs at a fixed rate and its command is held in between, like a real
+//! control loop.
+//!
+//! Everything is integrated in the goal's frame (the controller's natural
+//! one) and turned back into world coordinates for the samples.
+
+use kinolab_wheels::{Chassis, Vector3, WheelKind};
+use serde::Serialize;
+
+use crate::error::{ControlError, finite, positive};
+use crate::noise::{NOISE_INTERVAL, Noise};
+use crate::plan::Plan;
+use crate::polar::{Direction, Gains, Polar};
+use crate::pose::{Pose, wrap, wrap_near};
+
+/// What decides (v, ω).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Driver {
+    /// The polar go-to-pose controller, closed loop.
+    Polar { gains: Gains, direction: Direction },
+    /// A timetable of commands, open loop.
+    OpenLoop(Plan),
+}
+
+/// When the goal counts as reached.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Tolerance {
+    /// m
+    pub position: f64,
+    /// rad
+    pub heading: f64,
+}
+
+impl Default for Tolerance {
+    /// 1 mm and 0.1°.
+    fn default() -> Self {
+        Self {
+            position: 1e-3,
+            heading: 0.1f64.to_radians(),
+        }
+    }
+}
+
+/// How (v, ω) becomes wheel spins, for saturation, slip and the peak wheel
+/// speed: spin_i = a_i v + b_i ω for each driven (fixed or Swedish) wheel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriveModel {
+    pub robot: String,
+    /// Index in the robot's wheel list of each driven wheel.
+    pub driven: Vec<usize>,
+    /// (a_i, b_i) per driven wheel, rad/s per m/s and per rad/s.
+    pub gains: Vec<[f64; 2]>,
+}
+
+impl DriveModel {
+    /// The drive of a robot that moves like a unicycle: driving straight
+    /// and turning on the spot must both be admissible, and the motors are
+    /// its fixed and Swedish wheels (castors and spheres just follow).
+    pub fn new(chassis: &Chassis) -> Result<Self, ControlError> {
+        let name = chassis.name().to_string();
+        if let Some(i) = chassis
+            .wheels()
+            .iter()
+            .position(|w| w.kind == WheelKind::Steered)
+        {
+            return Err(ControlError::new(
+                format!("robot.wheels[{i}]"),
+                format!(
+                    "`{name}` has a steered wheel; the unicycle simulation needs a robot driven by fixed or Swedish wheels, such as differential-drive"
+                ),
+            ));
+        }
+        let straight = chassis.inverse(Vector3::new(1.0, 0.0, 0.0))?;
+        let spin = chassis.inverse(Vector3::new(0.0, 0.0, 1.0))?;
+        if !straight.feasible || !spin.feasible {
+            return Err(ControlError::new(
+                "robot",
+                format!(
+                    "`{name}` cannot both drive straight ahead and turn on the spot, as the unicycle model needs"
+                ),
+            ));
+        }
+        let driven: Vec<usize> = chassis
+            .wheels()
+            .iter()
+            .enumerate()
+            .filter(|(_, w)| matches!(w.kind, WheelKind::Fixed | WheelKind::Swedish { .. }))
+            .map(|(i, _)| i)
+            .collect();
+        if driven.is_empty() {
+            return Err(ControlError::new(
+                "robot",
+                format!("`{name}` has no driven (fixed or Swedish) wheel"),
+            ));
+        }
+        let gains: Vec<[f64; 2]> = driven
+            .iter()
+            .map(|&i| [straight.wheels[i].spin, spin.wheels[i].spin])
+            .collect();
+        Ok(Self {
+            robot: name,
+            driven,
+            gains,
+        })
+    }
+
+    /// The largest |spin| of the driven wheels for (v, ω), rad/s.
+    #[inline]
+    pub fn peak(&self, v: f64, omega: f64) -> f64 {
+        self.gains
+            .iter()
+            .fold(0.0, |m: f64, [a, b]| m.max((a * v + b * omega).abs()))
+    }
+
+    /// Scale (v, ω) down together, keeping the path's curvature, until no
+    /// wheel spins faster than `max`.
+    #[inline]
+    pub fn saturate(&self, v: f64, omega: f64, max: f64) -> (f64, f64) {
+        let peak = self.peak(v, omega);
+        if peak > max {
+            let k = max / peak;
+            (v * k, omega * k)
+        } else {
+            (v, omega)
+        }
+    }
+}
+
+/// One simulation: who drives, from where to where, and how it is integrated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    pub start: Pose,
+    pub goal: Pose,
+    pub driver: Driver,
+    /// Integration step, s.
+    pub dt: f64,
+    /// Simulated time, s.
+    pub duration: f64,
+    /// Keep every n-th step as a sample.
+    pub output_every: usize,
+    pub drive: DriveModel,
+    /// Wheel-speed limit, rad/s.
+    pub max_wheel_speed: Option<f64>,
+    /// Sampled-data controller rate, Hz (`None`: evaluated continuously).
+    pub control_rate: Option<f64>,
+    pub noise: Option<Noise>,
+    pub tolerance: Tolerance,
+}
+
+/// Most integration steps one run may take (about a second of computing).
+pub const MAX_STEPS: usize = 5_000_000;
+/// Most samples one run may return.
+pub const MAX_SAMPLES: usize = 200_000;
+
+/// The robot at one moment.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    pub t: f64,
+    /// World frame.
+    pub pose: Pose,
+    /// Commanded speed, m/s, and turn rate, rad/s (after saturation).
+    pub v: f64,
+    pub omega: f64,
+    /// The goal as the robot sees it (forward angles, or backward ones when
+    /// the controller drives rear first).
+    pub polar: Polar,
+    /// Fastest driven wheel, rad/s.
+    pub wheel_speed: f64,
+}
+
+/// A finished run and its metrics.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Trajectory {
+    pub samples: Vec<Sample>,
+    /// Within the tolerance of the goal at the end, having settled there.
+    pub reached: bool,
+    /// When it entered the tolerance for the last time (and stayed), s.
+    pub time_to_goal: Option<f64>,
+    pub final_pose: Pose,
+    /// Distance from the goal at the end, m.
+    pub final_position_error: f64,
+    /// Heading error at the end, rad, (−π, π].
+    pub final_heading_error: f64,
+    /// Distance driven, m.
+    pub path_length: f64,
+    /// Fastest any driven wheel turned, rad/s.
+    pub peak_wheel_speed: f64,
+    /// Whether the controller drove rear first.
+    pub backward: bool,
+}
+
+impl Run {
+    /// The polar controller with the contract's defaults: dt = 1 ms, 10 s,
+    /// a sample every 100 steps, the catalogue's differential drive.
+    pub fn polar(start: Pose, goal: Pose, gains: Gains) -> Result<Self, ControlError> {
+        Ok(Self {
+            start,
+            goal,
+            driver: Driver::Polar {
+                gains,
+                direction: Direction::Auto,
+            },
+            dt: 1e-3,
+            duration: 10.0,
+            output_every: 100,
+            drive: default_drive()?,
+            max_wheel_speed: None,
+            control_rate: None,
+            noise: None,
+            tolerance: Tolerance::default(),
+        })
+    }
+
+    /// An open-loop run of `plan`; the goal is where the plan ends.
+    pub fn open_loop(plan: Plan) -> Result<Self, ControlError> {
+        let goal = plan.end();
+        let start = plan.start;
+        let duration = (plan.duration() + 1.0).max(1.0);
+        Ok(Self {
+            driver: Driver::OpenLoop(plan),
+            duration,
+            ..Self::polar(start, goal, crate::polar::TEXTBOOK_GAINS)?
+        })
+    }
+
+    fn check(&self) -> Result<usize, ControlError> {
+        for (field, pose) in [("start", &self.start), ("goal", &self.goal)] {
+            for (name, v) in [("x", pose.x), ("y", pose.y), ("theta", pose.theta)] {
+                finite(&format!("{field}.{name}"), v)?;
+            }
+        }
+        positive("dt", self.dt)?;
+        positive("duration", self.duration)?;
+        if self.output_every == 0 {
+            return Err(ControlError::new("output_every", "must be at least 1"));
+        }
+        let steps = (self.duration / self.dt - 1e-9).ceil().max(1.0);
+        if steps > MAX_STEPS as f64 {
+            return Err(ControlError::new(
+                "dt",
+                format!(
+                    "duration / dt = {steps:.0} steps; at most {MAX_STEPS} (raise dt or shorten the run)"
+                ),
+            ));
+        }
+        let steps = steps as usize;
+        if steps / self.output_every > MAX_SAMPLES {
+            return Err(ControlError::new(
+                "output_every",
+                format!(
+                    "would keep {} samples; at most {MAX_SAMPLES}",
+                    steps / self.output_every
+                ),
+            ));
+        }
+        if let Some(max) = self.max_wheel_speed {
+            positive("max_wheel_speed", max)?;
+        }
+        if let Some(rate) = self.control_rate {
+            positive("control_rate", rate)?;
+            if 1.0 / rate < self.dt * (1.0 - 1e-9) {
+                return Err(ControlError::new(
+                    "control_rate",
+                    format!(
+                        "{rate} Hz is faster than the integration step (1/dt = {} Hz)",
+                        1.0 / self.dt
+                    ),
+                ));
+            }
+        }
+        if let Driver::Polar { gains, .. } = &self.driver {
+            Gains::new(gains.k_rho, gains.k_alpha, gains.k_beta)
+                .map_err(|e| ControlError::new(format!("controller.{}", e.field), e.message))?;
+        }
+        if let Some(noise) = &self.noise {
+            noise.check()?;
+        }
+        Ok(steps)
+    }
+
+    /// Integrate the run.
+    pub fn simulate(&self) -> Result<Trajectory, ControlError> {
+        let steps = self.check()?;
+        let start = self.start.relative_to(&self.goal);
+        let backward = match &self.driver {
+            Driver::Polar { direction, .. } => match direction {
+                Direction::Auto => !Polar::forward(&start).goal_in_front(),
+                Direction::Forward => false,
+                Direction::Backward => true,
+            },
+            Driver::OpenLoop(_) => false,
+        };
+        let mut system = System {
+            run: self,
+            backward,
+            held: None,
+            slip: [0.0; 2],
+            push: [0.0; 3],
+        };
+        let (sg, cg) = self.goal.theta.sin_cos();
+        let control_every = self
+            .control_rate
+            .map(|rate| ((1.0 / rate) / self.dt).round().max(1.0) as usize);
+
+        let mut s = [start.x, start.y, wrap(start.theta)];
+        let mut samples = Vec::with_capacity(steps / self.output_every + 2);
+        let mut time_to_goal = None;
+        let mut path_length = 0.0;
+        let mut peak_wheel_speed: f64 = 0.0;
+        let mut noise_interval = u64::MAX;
+        for k in 0..=steps {
+            let t = (k as f64 * self.dt).min(self.duration);
+            // Reached means arrived and stayed: the time it last entered
+            // the tolerance, if it is still inside at the end.
+            if !self.within_tolerance(&s) {
+                time_to_goal = None;
+            } else if time_to_goal.is_none() {
+                time_to_goal = Some(t);
+            }
+            if let Some(noise) = &self.noise {
+                let interval = (t / NOISE_INTERVAL) as u64;
+                if interval != noise_interval {
+                    noise_interval = interval;
+                    system.slip = noise.slip_of(interval);
+                    let [px, py, pw] = noise.push(interval);
+                    // World push seen in the goal frame.
+                    system.push = [cg * px + sg * py, -sg * px + cg * py, pw];
+                }
+            }
+            if let Some(every) = control_every
+                && k % every == 0
+            {
+                // A controller tick: compute afresh, then hold.
+                system.held = None;
+                system.held = Some(system.command(&s, t));
+            }
+            let (v, omega) = system.command(&s, t);
+            let wheel_speed = self.drive.peak(v, omega);
+            peak_wheel_speed = peak_wheel_speed.max(wheel_speed);
+            if k % self.output_every == 0 || k == steps {
+                samples.push(Sample {
+                    t,
+                    pose: Pose::new(s[0], s[1], s[2]).from_frame(&self.goal),
+                    v,
+                    omega,
+                    polar: system.polar(&s),
+                    wheel_speed,
+                });
+            }
+            if k == steps {
+                break;
+            }
+            let h = (self.duration - t).min(self.dt);
+            let next = system.rk4(&s, t, h);
+            let (dx, dy) = (next[0] - s[0], next[1] - s[1]);
+            path_length += (dx * dx + dy * dy).sqrt();
+            s = [next[0], next[1], wrap_near(next[2])];
+        }
+        let final_pose = Pose::new(s[0], s[1], s[2]).from_frame(&self.goal);
+        Ok(Trajectory {
+            samples,
+            reached: time_to_goal.is_some(),
+            time_to_goal,
+            final_pose,
+            final_position_error: s[0].hypot(s[1]),
+            final_heading_error: wrap(s[2]),
+            path_length,
+            peak_wheel_speed,
+            backward,
+        })
+    }
+
+    fn within_tolerance(&self, s: &[f64; 3]) -> bool {
+        // θ stays wrapped between steps, so the cheap wrap is enough.
+        s[0] * s[0] + s[1] * s[1] <= self.tolerance.position * self.tolerance.position
+            && wrap_near(s[2]).abs() <= self.tolerance.heading
+    }
+}
+
+fn default_drive() -> Result<DriveModel, ControlError> {
+    DriveModel::new(&kinolab_wheels::catalogue::robot("differential-drive")?)
+}
+
+/// The closed (or open) loop as a right-hand side for the integrator.
+struct System<'a> {
+    run: &'a Run,
+    backward: bool,
+    /// The sampled-data controller's held command.
+    held: Option<(f64, f64)>,
+    /// This noise interval's slip (of v, of ω) and push (goal frame).
+    slip: [f64; 2],
+    push: [f64; 3],
+}
+
+impl System<'_> {
+    fn polar(&self, s: &[f64; 3]) -> Polar {
+        Polar::near(s[0], s[1], s[2], self.backward)
+    }
+
+    /// The commanded (v, ω) in state `s` at time `t`, after saturation.
+    #[inline]
+    fn command(&self, s: &[f64; 3], t: f64) -> (f64, f64) {
+        if let Some(held) = self.held {
+            return held;
+        }
+        let (v, omega) = match &self.run.driver {
+            Driver::Polar { gains, .. } => gains.command(&self.polar(s)),
+            Driver::OpenLoop(plan) => plan.command(t),
+        };
+        match self.run.max_wheel_speed {
+            Some(max) => self.run.drive.saturate(v, omega, max),
+            None => (v, omega),
+        }
+    }
+
+    /// d/dt (x, y, θ) of the unicycle, including slip and push.
+    #[inline]
+    fn rate(&self, s: &[f64; 3], t: f64) -> [f64; 3] {
+        let (v, omega) = self.command(s, t);
+        let (v, omega) = (v * (1.0 - self.slip[0]), omega * (1.0 - self.slip[1]));
+        let (sn, cs) = s[2].sin_cos();
+        [
+            v * cs + self.push[0],
+            v * sn + self.push[1],
+            omega + self.push[2],
+        ]
+    }
+
+    /// One classic Runge–Kutta step of length h.
+    #[inline]
+    fn rk4(&self, s: &[f64; 3], t: f64, h: f64) -> [f64; 3] {
+        let at = |k: &[f64; 3], f: f64| [s[0] + f * k[0], s[1] + f * k[1], s[2] + f * k[2]];
+        let k1 = self.rate(s, t);
+        let k2 = self.rate(&at(&k1, h / 2.0), t + h / 2.0);
+        let k3 = self.rate(&at(&k2, h / 2.0), t + h / 2.0);
+        let k4 = self.rate(&at(&k3, h), t + h);
+        std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+    }
+}
