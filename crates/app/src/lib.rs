@@ -7,6 +7,7 @@
 //! - [`route`] and [`progress`]: addresses in the URL and what is remembered.
 
 pub mod app;
+pub mod export;
 pub mod images;
 pub mod lesson_view;
 pub mod math_view;

@@ -217,3 +217,48 @@ fn a_shared_layout_in_the_link_is_restored() {
     // The app offers the same link back for the address bar.
     assert_eq!(h.state_mut().take_state_hash().as_deref(), Some(link));
 }
+
+const GAINS_LESSON: &str = "#/motion-control/choosing-gains";
+
+#[test]
+fn the_reach_within_exercise_is_graded_by_simulation() {
+    let mut h = animated(KinolabApp::new(None, GAINS_LESSON));
+    h.run_steps(4);
+    h.get_by_label_contains(
+        "Exercise: Choose gains that reach the goal within 3 s without driving backward.",
+    );
+    // The textbook gains need about 5.8 s from this start: too slow.
+    let checks: Vec<_> = h.get_all_by_label("Check").collect();
+    checks[0].click();
+    h.run_steps(2);
+    h.get_by_label_contains("Not reached within 3 s");
+    // Mark the unstable sets of the second exercise (1.5 < 2, 0.5 > 0, −2 < 0).
+    for set in ["set 2:", "set 3:", "set 5:"] {
+        h.get_by_label_contains(set).click();
+        h.run_steps(1);
+    }
+    h.get_all_by_label("Check").last().unwrap().click();
+    h.run_steps(2);
+    h.get_by_label_contains("All correct: exactly the unstable sets are marked.");
+}
+
+#[test]
+fn the_playground_shows_the_run_and_its_stability() {
+    let link = "#/motion-control/feedback-and-polar-coordinates";
+    let mut h = animated(KinolabApp::new(None, link));
+    h.run_steps(4);
+    h.get_all_by_label_contains("Strongly stable: the robot converges")
+        .next()
+        .unwrap();
+    h.get_by_label_contains("Reached (within 1 mm and 0.1°) after 5.8");
+    // A link carrying unstable gains (k_β > 0) is restored and explained.
+    let shared = format!("{link}?w0=run,-1,0.5,0,0,0,0,3,8,1.5,auto,0,0,1,0,0!line_1");
+    let mut h = animated(KinolabApp::new(None, &shared));
+    h.run_steps(4);
+    h.get_by_label_contains("k_β > 0: the heading term pushes the wrong way");
+    h.get_by_label_contains("Not reached");
+    assert_eq!(
+        h.state_mut().take_state_hash().as_deref(),
+        Some(shared.as_str())
+    );
+}

@@ -102,6 +102,31 @@ fn wheels_forward() -> f64 {
         .map_or(f64::NAN, |fk| fk.twist[0] + fk.residual)
 }
 
+/// The contract's example run: 10 s of the polar controller at 1 kHz.
+fn control_run() -> f64 {
+    use kinolab_control::{Pose, Run, TEXTBOOK_GAINS};
+    match Run::polar(Pose::new(-1.0, 0.5, 0.0), Pose::default(), TEXTBOOK_GAINS)
+        .and_then(|run| black_box(run).simulate())
+    {
+        Ok(t) => t.path_length,
+        Err(_) => f64::NAN,
+    }
+}
+
+/// The playground's "many starts" view: 100 starts on the unit circle at
+/// the preview step.
+fn control_batch() -> f64 {
+    use kinolab_control::batch::{batch, circle_starts, preview};
+    use kinolab_control::{Pose, Run, TEXTBOOK_GAINS};
+    let goal = Pose::default();
+    let runs = Run::polar(goal, goal, TEXTBOOK_GAINS)
+        .and_then(|run| batch(&preview(&run), &circle_starts(&goal, 1.0, 100, 0.0)?));
+    match runs {
+        Ok(runs) => runs.iter().map(|t| t.path_length).sum(),
+        Err(_) => f64::NAN,
+    }
+}
+
 /// Every kernel, in report order.
 pub const KERNELS: &[Kernel] = &[
     Kernel {
@@ -139,6 +164,14 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "wheels_forward_4",
         run: wheels_forward,
+    },
+    Kernel {
+        name: "control_run_10s_1khz",
+        run: control_run,
+    },
+    Kernel {
+        name: "control_batch_100_starts",
+        run: control_batch,
     },
 ];
 

@@ -4,6 +4,7 @@
 //! with status 2 and one line on stderr naming the file or option and the
 //! field; nothing ever prints a panic or a backtrace.
 
+mod control;
 mod wheels;
 
 use std::path::PathBuf;
@@ -59,6 +60,34 @@ enum Command {
     Robots {
         /// A catalogue id such as `tricycle`.
         id: Option<String>,
+    },
+    /// Simulate a run file: the polar controller (or an open-loop plan) on a differential drive.
+    Simulate {
+        /// A run file (`*.run.json`, see the contract).
+        run: PathBuf,
+    },
+    /// Simulate a run file from many starts on a circle around its goal.
+    Batch {
+        /// A run file; its own start is replaced by the circle's.
+        run: PathBuf,
+        /// Circle radius, m.
+        #[arg(long, default_value_t = 1.0)]
+        radius: f64,
+        /// Number of starts.
+        #[arg(long, default_value_t = 16)]
+        count: usize,
+        /// Heading of every start, degrees.
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        heading_deg: f64,
+        /// Include each run's sampled path.
+        #[arg(long)]
+        paths: bool,
+    },
+    /// Stability of polar-controller gains: the conditions, the linearised loop, its eigenvalues.
+    Gains {
+        /// K_RHO,K_ALPHA,K_BETA
+        #[arg(value_name = "K_RHO,K_ALPHA,K_BETA", allow_hyphen_values = true)]
+        gains: String,
     },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
@@ -123,6 +152,15 @@ fn run(command: Command) -> Result<Value, Failure> {
             theta,
         } => wheels::drive(&robot, twist.as_deref(), spins.as_deref(), theta),
         Command::Robots { id } => wheels::robots(id.as_deref()),
+        Command::Simulate { run } => control::simulate(&run),
+        Command::Batch {
+            run,
+            radius,
+            count,
+            heading_deg,
+            paths,
+        } => control::batch_run(&run, radius, count, heading_deg, paths),
+        Command::Gains { gains } => control::gains(&gains),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

@@ -124,6 +124,16 @@ fn bad_input_is_one_line_naming_the_field() {
     assert!(!stderr.contains("panicked"));
 }
 
+/// The call exits 2 with one stderr line containing `want`, and no stdout.
+fn fails_with(args: &[&str], want: &str) {
+    let (code, stdout, stderr) = kinolab(args);
+    assert_eq!(code, 2, "{args:?}");
+    assert!(stdout.is_empty());
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.contains(want), "{args:?}: {stderr}");
+    assert!(!stderr.contains("panicked"));
+}
+
 /// Write `text` to a fresh file under the system temp folder.
 fn robot_file(name: &str, text: &str) -> String {
     let dir = std::env::temp_dir().join(format!("kinolab-cli-{}", std::process::id()));
@@ -235,14 +245,7 @@ fn drive_steers_to_the_nearest_angle() {
 
 #[test]
 fn bad_robot_input_is_one_line_naming_file_and_field() {
-    let check = |args: &[&str], want: &str| {
-        let (code, stdout, stderr) = kinolab(args);
-        assert_eq!(code, 2, "{args:?}");
-        assert!(stdout.is_empty());
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
-        assert!(stderr.contains(want), "{args:?}: {stderr}");
-        assert!(!stderr.contains("panicked"));
-    };
+    let check = fails_with;
     let negative = robot_file(
         "negative.robot.json",
         r#"{"wheels":[{"kind":"fixed","alpha_deg":0,"beta_deg":0,"l":0.2,"radius":-0.1}]}"#,
@@ -310,4 +313,127 @@ fn robots_lists_the_catalogue_and_prints_files() {
     assert_eq!(file["wheels"][2]["steer_group"], "linkage");
     let path = robot_file("car.robot.json", &file.to_string());
     assert_eq!(json(&["analyze", &path])["degree_of_maneuverability"], 2);
+}
+
+/// The run-file example of the command-line contract, verbatim.
+const CONTRACT_RUN: &str = kinolab_control::file::CONTRACT_EXAMPLE;
+
+#[test]
+fn simulate_the_contract_example() {
+    let path = robot_file("contract.run.json", CONTRACT_RUN);
+    let out = json(&["simulate", &path]);
+    let samples = out["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 101);
+    let first = &samples[0];
+    assert_eq!(first["t"], 0.0);
+    assert_eq!(
+        (first["x"].as_f64(), first["y"].as_f64()),
+        (Some(-1.0), Some(0.5))
+    );
+    assert_eq!(first["theta_deg"], 0.0);
+    // v = k_ρ ρ = 3 √1.25 ≈ 3.354; ω = (k_α − k_β) α with α = atan2(−0.5, 1).
+    let v = first["v"].as_f64().unwrap();
+    assert!((v - 3.0 * 1.25f64.sqrt()).abs() < 1e-12, "{v}");
+    let omega = first["omega"].as_f64().unwrap();
+    assert!(
+        (omega - 9.5 * (-0.5f64).atan2(1.0)).abs() < 1e-12,
+        "{omega}"
+    );
+    for key in ["t", "x", "y", "theta_deg", "v", "omega"] {
+        assert!(samples.iter().all(|s| s[key].is_number()), "{key}");
+    }
+    assert_eq!(out["reached"], true);
+    let t = out["time_to_goal"].as_f64().unwrap();
+    assert!((5.0..7.0).contains(&t), "{t}");
+    let last = &samples[100];
+    assert_eq!(last["t"], 10.0);
+    for key in ["x", "y", "theta_deg"] {
+        let f = out["final"][key].as_f64().unwrap();
+        assert!(f.abs() < 1e-3, "{key} = {f}");
+        assert_eq!(out["final"][key], last[key]);
+    }
+    assert_eq!(out["stability"]["strongly_stable"], true);
+}
+
+#[test]
+fn simulate_batch_and_gains() {
+    let path = robot_file("circle.run.json", CONTRACT_RUN);
+    let out = json(&["batch", &path, "--radius", "1", "--count", "24"]);
+    assert_eq!(out["runs"].as_array().unwrap().len(), 24);
+    assert_eq!(out["all_reached"], true);
+    assert_eq!(out["reached"], 24);
+    // Starts in front of the goal drive rear first.
+    assert_eq!(out["runs"][0]["direction"], "backward");
+    assert_eq!(out["runs"][12]["direction"], "forward");
+
+    let g = json(&["gains", "3,8,-1.5"]);
+    assert_eq!(g["strongly_stable"], true);
+    let eig: Vec<f64> = g["eigenvalues"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e[0].as_f64().unwrap())
+        .collect();
+    assert!((eig[0] + 3.0).abs() < 1e-12);
+    // λ² + 5λ + 4.5 = 0 → λ = (−5 ± √7)/2
+    let mut rest = [eig[1], eig[2]];
+    rest.sort_by(f64::total_cmp);
+    assert!((rest[0] - (-5.0 - 7f64.sqrt()) / 2.0).abs() < 1e-12);
+    assert!((rest[1] - (-5.0 + 7f64.sqrt()) / 2.0).abs() < 1e-12);
+    let g = json(&["gains", "3,2,-1.5"]);
+    assert_eq!(g["locally_stable"], false);
+    assert_eq!(g["conditions"][2]["holds"], false);
+
+    // An open-loop plan reaches its own end when nothing slips.
+    let plan = robot_file(
+        "plan.run.json",
+        r#"{"controller":{"kind":"open_loop","segments":[{"kind":"line","length":1},{"kind":"turn","angle_deg":90}]},
+            "start":{"x":0,"y":0,"theta_deg":0},"duration":5}"#,
+    );
+    let out = json(&["simulate", &plan]);
+    assert_eq!(out["reached"], true);
+    assert!((out["final"]["x"].as_f64().unwrap() - 1.0).abs() < 1e-6);
+    assert!((out["final"]["theta_deg"].as_f64().unwrap() - 90.0).abs() < 1e-6);
+    assert!((out["plan"]["duration"].as_f64().unwrap() - 4.0).abs() < 1e-9);
+    assert_eq!(out["samples"][10]["wheels"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn bad_run_input_is_one_line_naming_file_and_field() {
+    let check = fails_with;
+    let bad = |name: &str, from: &str, to: &str| robot_file(name, &CONTRACT_RUN.replace(from, to));
+    check(
+        &["simulate", &bad("a.run.json", "\"k_beta\"", "\"k_b\"")],
+        "a.run.json: controller: unknown field `k_b`",
+    );
+    check(
+        &[
+            "simulate",
+            &bad("b.run.json", "\"dt\": 0.001", "\"dt\": -1"),
+        ],
+        "b.run.json: dt: must be greater than 0, got -1",
+    );
+    check(
+        &[
+            "simulate",
+            &bad("c.run.json", "\"x\": -1.0", "\"x\": \"far\""),
+        ],
+        "c.run.json: start.x: invalid type",
+    );
+    check(
+        &[
+            "simulate",
+            &bad("d.run.json", "\"dt\": 0.001", "\"dt\": 1e-9"),
+        ],
+        "d.run.json: dt: duration / dt",
+    );
+    check(
+        &["simulate", "/no/such.run.json"],
+        "/no/such.run.json: cannot read",
+    );
+    check(
+        &["batch", &bad("e.run.json", "", ""), "--count", "0"],
+        "--count: must be from 1",
+    );
+    check(&["gains", "3,8"], "gains: expected three numbers");
 }

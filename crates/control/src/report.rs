@@ -100,6 +100,23 @@ pub fn simulation(spec: &RunSpec, t: &Trajectory) -> Value {
     tidy(out)
 }
 
+/// `run` from `count` starts on a circle of `radius` around its goal, all
+/// with heading `heading_deg`: the [`batch`] report, with each run's path
+/// when `paths`. Errors name the argument (`radius`, `count`, `heading`).
+pub fn circle_batch(
+    spec: &RunSpec,
+    radius: f64,
+    count: usize,
+    heading_deg: f64,
+    paths: bool,
+) -> Result<Value, crate::ControlError> {
+    let starts =
+        crate::batch::circle_starts(&spec.run.goal, radius, count, heading_deg.to_radians())?;
+    let runs = crate::batch::batch(&spec.run, &starts)?;
+    let outcomes: Vec<Outcome> = starts.iter().zip(&runs).map(Outcome::from).collect();
+    Ok(batch(&outcomes, paths.then_some(runs.as_slice())))
+}
+
 /// A batch: one line per start, and whether all of them made it.
 pub fn batch(outcomes: &[Outcome], paths: Option<&[Trajectory]>) -> Value {
     let runs: Vec<Value> = outcomes

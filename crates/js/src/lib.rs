@@ -7,6 +7,8 @@
 //! kinolab.staticStability([0, 0], [[1, 1], [-1, 1], [0, -1]]);
 //! kinolab.analyzeRobot("tricycle").degree_of_maneuverability; // 2
 //! kinolab.driveWheels("f,-90,180,1,1;f,90,0,1,1", [4, 2]).twist; // [3, 0, 1]
+//! kinolab.simulate({ controller: { kind: "polar", k_rho: 3, k_alpha: 8, k_beta: -1.5 },
+//!   start: { x: -1, y: 0.5, theta_deg: 0 }, goal: { x: 0, y: 0, theta_deg: 0 } }).reached; // true
 //! ```
 //!
 //! Every function computes with the same core crates as the lab and the
@@ -244,4 +246,54 @@ pub fn differential_drive(track: f64, v_left: f64, v_right: f64) -> Result<JsVal
     let m = kinolab_wheels::closed_form::differential_drive(track, v_left, v_right)
         .map_err(|e| JsError::new(&e.to_string()))?;
     json_to_js(&serde_json::json!({ "v": m.v, "omega": m.omega, "radius": m.radius }))
+}
+
+/// A run given as a run-file object or as JSON text.
+fn run_spec(run: JsValue) -> Result<kinolab_control::file::RunSpec, JsError> {
+    let text = match run.as_string() {
+        Some(text) => text,
+        None => {
+            let value: serde_json::Value = from_js("run", run)?;
+            value.to_string()
+        }
+    };
+    kinolab_control::file::from_json(&text).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// What `kinolab simulate` prints, for a run-file object (or its JSON
+/// text): `{ samples: [{ t, x, y, theta_deg, v, omega, … }], reached,
+/// time_to_goal, final, … }`.
+#[wasm_bindgen]
+pub fn simulate(run: JsValue) -> Result<JsValue, JsError> {
+    let spec = run_spec(run)?;
+    let t = spec
+        .run
+        .simulate()
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    json_to_js(&kinolab_control::report::simulation(&spec, &t))
+}
+
+/// The run from `count` starts on a circle of `radius` around its goal,
+/// all with heading `headingDeg`: `{ runs: [{ start, reached, time_to_goal,
+/// final, path }], all_reached, reached, slowest_time_to_goal }`.
+#[wasm_bindgen(js_name = batchSimulate)]
+pub fn batch_simulate(
+    run: JsValue,
+    radius: f64,
+    count: usize,
+    heading_deg: f64,
+) -> Result<JsValue, JsError> {
+    let spec = run_spec(run)?;
+    let report = kinolab_control::report::circle_batch(&spec, radius, count, heading_deg, true)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    json_to_js(&report)
+}
+
+/// What `kinolab gains` prints: `{ locally_stable, strongly_stable,
+/// conditions, eigenvalues, linearised, explanation }`.
+#[wasm_bindgen(js_name = controllerStability)]
+pub fn controller_stability(k_rho: f64, k_alpha: f64, k_beta: f64) -> Result<JsValue, JsError> {
+    let gains = kinolab_control::Gains::new(k_rho, k_alpha, k_beta)
+        .map_err(|e| JsError::new(&e.to_string()))?;
+    json_to_js(&kinolab_control::report::stability(&gains))
 }

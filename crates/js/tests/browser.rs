@@ -103,3 +103,32 @@ fn siegwart_example_through_the_js_api() {
     let dd = kinolab_js::differential_drive(0.5, 0.2, 0.4).unwrap();
     assert!((get(&dd, "omega").as_f64().unwrap() - 0.4).abs() < 1e-12);
 }
+
+const RUN: &str = r#"{"controller":{"kind":"polar","k_rho":3,"k_alpha":8,"k_beta":-1.5},
+  "start":{"x":-1,"y":0.5,"theta_deg":0},"goal":{"x":0,"y":0,"theta_deg":0}}"#;
+
+#[wasm_bindgen_test]
+fn controller_through_the_js_api() {
+    let out = kinolab_js::simulate(JsValue::from_str(RUN)).unwrap();
+    assert_eq!(get(&out, "reached").as_bool(), Some(true));
+    let t = get(&out, "time_to_goal").as_f64().unwrap();
+    assert!((5.0..7.0).contains(&t), "{t}");
+    let first = js_sys_get(&get(&out, "samples"), "0");
+    assert!((get(&first, "v").as_f64().unwrap() - 3.0 * 1.25f64.sqrt()).abs() < 1e-12);
+
+    let batch = kinolab_js::batch_simulate(JsValue::from_str(RUN), 1.0, 12, 0.0).unwrap();
+    assert_eq!(get(&batch, "all_reached").as_bool(), Some(true));
+    assert_eq!(get(&batch, "reached").as_f64(), Some(12.0));
+
+    let s = kinolab_js::controller_stability(3.0, 2.0, -1.5).unwrap();
+    assert_eq!(get(&s, "locally_stable").as_bool(), Some(false));
+    let Err(bad) = kinolab_js::simulate(JsValue::from_str(&RUN.replace("\"k_rho\"", "\"k_r\"")))
+    else {
+        panic!("accepted an unknown gain");
+    };
+    let message = get(&JsValue::from(bad), "message").as_string().unwrap();
+    assert!(
+        message.starts_with("controller: unknown field `k_r`"),
+        "{message}"
+    );
+}

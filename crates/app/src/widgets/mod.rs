@@ -5,9 +5,13 @@
 //! number a widget shows comes from a core crate, never from the UI.
 
 mod chassis_view;
+mod controller_field;
+mod controller_params;
+mod controller_playground;
 mod frame_rotation;
 mod leg_events;
 mod scripted_vs_sensing;
+mod speed_profile;
 mod support_polygon;
 mod wheel_drive;
 mod wheel_workbench;
@@ -61,6 +65,16 @@ pub const REGISTRY: &[(&str, Constructor, &str)] = &[
         "frame-rotation",
         frame_rotation::create,
         "inertial and robot frames and the rotation R(theta) between them",
+    ),
+    (
+        "speed-profile",
+        speed_profile::create,
+        "a trapezoidal speed profile: accelerate, cruise, brake over a distance",
+    ),
+    (
+        "controller-playground",
+        controller_playground::create,
+        "the polar go-to-pose controller: runs, many starts, open vs closed loop, the gain region",
     ),
 ];
 
