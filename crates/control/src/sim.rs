@@ -421,27 +421,35 @@ impl System<'_> {
         }
     }
 
-    /// d/dt (x, y, θ) of the unicycle, including slip and push.
+    /// d/dt of the unicycle's state z = (x, y, θ, cos θ, sin θ), with slip
+    /// and push. Carrying cos θ and sin θ along (ċ = −θ̇ sin θ,
+    /// ṡ = θ̇ cos θ) spares a sine and a cosine at every stage.
     #[inline]
-    fn rate(&self, s: &[f64; 3], t: f64) -> [f64; 3] {
-        let (v, omega) = self.command(s, t);
+    fn rate(&self, z: &[f64; 5], t: f64) -> [f64; 5] {
+        let (v, omega) = self.command(&[z[0], z[1], z[2]], t);
         let (v, omega) = (v * (1.0 - self.slip[0]), omega * (1.0 - self.slip[1]));
-        let (sn, cs) = s[2].sin_cos();
+        let turn = omega + self.push[2];
         [
-            v * cs + self.push[0],
-            v * sn + self.push[1],
-            omega + self.push[2],
+            v * z[3] + self.push[0],
+            v * z[4] + self.push[1],
+            turn,
+            -turn * z[4],
+            turn * z[3],
         ]
     }
 
-    /// One classic Runge–Kutta step of length h.
+    /// One classic Runge–Kutta step of length h from pose `s` (x, y, θ).
+    /// The cosine and sine start exact from θ at every step, so they never
+    /// drift; the step stays fourth-order.
     #[inline]
     fn rk4(&self, s: &[f64; 3], t: f64, h: f64) -> [f64; 3] {
-        let at = |k: &[f64; 3], f: f64| [s[0] + f * k[0], s[1] + f * k[1], s[2] + f * k[2]];
-        let k1 = self.rate(s, t);
+        let (sn, cs) = s[2].sin_cos();
+        let z = [s[0], s[1], s[2], cs, sn];
+        let at = |k: &[f64; 5], f: f64| -> [f64; 5] { std::array::from_fn(|i| z[i] + f * k[i]) };
+        let k1 = self.rate(&z, t);
         let k2 = self.rate(&at(&k1, h / 2.0), t + h / 2.0);
         let k3 = self.rate(&at(&k2, h / 2.0), t + h / 2.0);
         let k4 = self.rate(&at(&k3, h), t + h);
-        std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+        std::array::from_fn(|i| z[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
     }
 }
