@@ -911,7 +911,7 @@ impl Playground {
                     let local = vec![[k_rho, 0.0], [a_max, 0.0], [a_max, b_min], [k_rho, b_min]];
                     plot.polygon(
                         Polygon::new("locally stable", local)
-                            .fill_color(good.gamma_multiply(0.15))
+                            .fill_color(good.gamma_multiply(0.3))
                             .stroke(Stroke::new(1.0, good.gamma_multiply(0.5))),
                     );
                     // Strong: k_β > (3/5)(2 k_ρ / π − k_α), inside the local region.
@@ -926,7 +926,7 @@ impl Playground {
                     strong.push([k_rho, 0.0]);
                     plot.polygon(
                         Polygon::new("strongly stable", strong)
-                            .fill_color(good.gamma_multiply(0.35))
+                            .fill_color(good.gamma_multiply(0.6))
                             .stroke(Stroke::new(1.0, good)),
                     );
                 }
