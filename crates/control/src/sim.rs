@@ -359,7 +359,8 @@ impl Run {
                 break;
             }
             let h = (self.duration - t).min(self.dt);
-            let next = system.rk4(&s, t, h);
+            // The command at the step's start is the first stage's: reuse it.
+            let next = system.rk4(&s, t, h, (v, omega));
             let (dx, dy) = (next[0] - s[0], next[1] - s[1]);
             path_length += (dx * dx + dy * dy).sqrt();
             s = [next[0], next[1], wrap_near(next[2])];
@@ -426,7 +427,12 @@ impl System<'_> {
     /// ṡ = θ̇ cos θ) spares a sine and a cosine at every stage.
     #[inline]
     fn rate(&self, z: &[f64; 5], t: f64) -> [f64; 5] {
-        let (v, omega) = self.command(&[z[0], z[1], z[2]], t);
+        self.rate_with(z, self.command(&[z[0], z[1], z[2]], t))
+    }
+
+    /// [`System::rate`] for an already computed command.
+    #[inline]
+    fn rate_with(&self, z: &[f64; 5], (v, omega): (f64, f64)) -> [f64; 5] {
         let (v, omega) = (v * (1.0 - self.slip[0]), omega * (1.0 - self.slip[1]));
         let turn = omega + self.push[2];
         [
@@ -438,15 +444,15 @@ impl System<'_> {
         ]
     }
 
-    /// One classic Runge–Kutta step of length h from pose `s` (x, y, θ).
-    /// The cosine and sine start exact from θ at every step, so they never
-    /// drift; the step stays fourth-order.
+    /// One classic Runge–Kutta step of length h from pose `s` (x, y, θ),
+    /// where the command is `first`. The cosine and sine start exact from θ
+    /// at every step, so they never drift; the step stays fourth-order.
     #[inline]
-    fn rk4(&self, s: &[f64; 3], t: f64, h: f64) -> [f64; 3] {
+    fn rk4(&self, s: &[f64; 3], t: f64, h: f64, first: (f64, f64)) -> [f64; 3] {
         let (sn, cs) = s[2].sin_cos();
         let z = [s[0], s[1], s[2], cs, sn];
         let at = |k: &[f64; 5], f: f64| -> [f64; 5] { std::array::from_fn(|i| z[i] + f * k[i]) };
-        let k1 = self.rate(&z, t);
+        let k1 = self.rate_with(&z, first);
         let k2 = self.rate(&at(&k1, h / 2.0), t + h / 2.0);
         let k3 = self.rate(&at(&k2, h / 2.0), t + h / 2.0);
         let k4 = self.rate(&at(&k3, h), t + h);
