@@ -5,6 +5,7 @@
 //! field; nothing ever prints a panic or a backtrace.
 
 mod control;
+mod mechanism;
 mod wheels;
 
 use std::path::PathBuf;
@@ -89,6 +90,34 @@ enum Command {
         #[arg(value_name = "K_RHO,K_ALPHA,K_BETA", allow_hyphen_values = true)]
         gains: String,
     },
+    /// Forward kinematics of a model file: the 4×4 pose of a frame (default: the tool).
+    Fk {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        /// Joint values, rad (revolute) or m (prismatic): Q1,...,QN
+        #[arg(long, value_name = "Q1,...,QN", allow_hyphen_values = true)]
+        q: String,
+        /// A frame name: a joint's, `base`, `world` or `tool`.
+        #[arg(long)]
+        frame: Option<String>,
+    },
+    /// Inverse kinematics of a model file: joint values that put a frame at a target.
+    Ik {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        /// Target position, m: X,Y,Z
+        #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+        position: String,
+        /// Target rotation, row-major: R11,...,R33 (position only when omitted)
+        #[arg(long, value_name = "R11,...,R33", allow_hyphen_values = true)]
+        rotation: Option<String>,
+        /// Starting joint values: Q1,...,QN (default: zero, clamped into the limits)
+        #[arg(long, value_name = "Q1,...,QN", allow_hyphen_values = true)]
+        seed: Option<String>,
+        /// The frame to place (default: the tool).
+        #[arg(long)]
+        frame: Option<String>,
+    },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
         /// A lessons folder to check; the embedded lessons when omitted.
@@ -161,6 +190,20 @@ fn run(command: Command) -> Result<Value, Failure> {
             paths,
         } => control::batch_run(&run, radius, count, heading_deg, paths),
         Command::Gains { gains } => control::gains(&gains),
+        Command::Fk { model, q, frame } => mechanism::fk(&model, &q, frame.as_deref()),
+        Command::Ik {
+            model,
+            position,
+            rotation,
+            seed,
+            frame,
+        } => mechanism::ik(
+            &model,
+            &position,
+            rotation.as_deref(),
+            seed.as_deref(),
+            frame.as_deref(),
+        ),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

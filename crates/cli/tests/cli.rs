@@ -437,3 +437,107 @@ fn bad_run_input_is_one_line_naming_file_and_field() {
     );
     check(&["gains", "3,8"], "gains: expected three numbers");
 }
+
+#[test]
+fn fk_and_ik_on_the_puma() {
+    // The issue's golden pose: q = (0, π/2, −π/2, 0, 0, 0).
+    let q = format!(
+        "0,{},{},0,0,0",
+        std::f64::consts::FRAC_PI_2,
+        -std::f64::consts::FRAC_PI_2
+    );
+    let out = json(&["fk", "catalogue:puma560", "--q", &q]);
+    assert_eq!(out["frame"], "tool");
+    let m = &out["matrix"];
+    let at = |i: usize, j: usize| m[i][j].as_f64().unwrap();
+    assert!((at(0, 3) - 0.0203).abs() < 1e-12);
+    assert!((at(1, 3) + 0.15005).abs() < 1e-12);
+    assert!((at(2, 3) - (0.8636 + 0.6718)).abs() < 1e-12);
+    assert_eq!(m[3], serde_json::json!([0.0, 0.0, 0.0, 1.0]));
+    let elbow = json(&["fk", "catalogue:puma560", "--q", &q, "--frame", "q2"]);
+    assert!((elbow["matrix"][0][3].as_f64().unwrap()).abs() < 1e-12);
+
+    // IK back to a full pose from a nearby seed.
+    let target = json(&[
+        "fk",
+        "catalogue:puma560",
+        "--q",
+        "0.3,-0.6,0.9,0.2,0.7,-0.4",
+    ]);
+    let t = &target["matrix"];
+    let position = format!("{},{},{}", t[0][3], t[1][3], t[2][3]);
+    let rotation: Vec<String> = (0..3)
+        .flat_map(|i| (0..3).map(move |j| (i, j)))
+        .map(|(i, j)| t[i][j].to_string())
+        .collect();
+    let out = json(&[
+        "ik",
+        "catalogue:puma560",
+        "--position",
+        &position,
+        "--rotation",
+        &rotation.join(","),
+        "--seed",
+        "0.2,-0.5,0.8,0,0.5,0",
+    ]);
+    assert_eq!(out["converged"], true, "{out}");
+    assert!(out["position_error"].as_f64().unwrap() < 1e-6);
+    assert!(out["rotation_error"].as_f64().unwrap() < 1e-6);
+    assert_eq!(out["q"].as_array().unwrap().len(), 6);
+
+    // Out of reach: not converged, the closest pose, exit 0.
+    let out = json(&["ik", "catalogue:planar-2r", "--position", "3,0,0"]);
+    assert_eq!(out["converged"], false);
+    assert!((out["position_error"].as_f64().unwrap() - 1.2).abs() < 1e-4);
+}
+
+#[test]
+fn fk_reads_the_contract_model_file() {
+    let path = robot_file(
+        "contract.model.json",
+        r#"{
+  "name": "puma560",
+  "convention": "standard_dh",
+  "joints": [
+    { "name": "q1", "type": "revolute", "a": 0.0, "d": 0.6718, "alpha_deg": 90, "offset_deg": 0, "limits_deg": [-160, 160] },
+    { "name": "q3", "type": "prismatic", "a": 0.0, "theta_deg": 0, "alpha_deg": 0, "offset": 0.0, "limits": [0.0, 0.5] }
+  ],
+  "base": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],
+  "tool": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]
+}"#,
+    );
+    let out = json(&["fk", &path, "--q", "0,0.2"]);
+    assert_eq!(out["matrix"][1][3], -0.2);
+    assert_eq!(out["matrix"][2][3], 0.6718);
+    fails_with(
+        &["fk", &path, "--q", "0,0.2,1"],
+        "--q: `puma560` has 2 joints, got 3 values",
+    );
+    fails_with(
+        &["fk", &path, "--q", "0,0.2", "--frame", "hand"],
+        "--frame: no frame named `hand`",
+    );
+    fails_with(
+        &["ik", &path, "--position", "1,2"],
+        "--position: expected X,Y,Z",
+    );
+    fails_with(
+        &[
+            "ik",
+            &path,
+            "--position",
+            "0,0,1",
+            "--rotation",
+            "2,0,0,0,1,0,0,0,1",
+        ],
+        "rotation: must be a rigid transform",
+    );
+    let broken = robot_file(
+        "broken.model.json",
+        r#"{"name":"x","convention":"standard_dh","joints":[{"name":"q1","type":"hinge"}]}"#,
+    );
+    fails_with(
+        &["fk", &broken, "--q", "0"],
+        "broken.model.json: joints[0].type: unknown variant `hinge`",
+    );
+}

@@ -1,0 +1,124 @@
+//! Denavit–Hartenberg chains, standard and modified (Craig), turned into
+//! the one internal tree.
+//!
+//! - Standard: link i's frame is `Rz(θᵢ) Tz(dᵢ) Tx(aᵢ) Rx(αᵢ)` after link i−1's.
+//! - Modified: `Rx(αᵢ₋₁) Tx(aᵢ₋₁) Rz(θᵢ) Tz(dᵢ)`: the twist and length of
+//!   the previous link come first.
+//!
+//! A revolute joint's variable is θ (θ = q + offset, d fixed); a prismatic
+//! joint's is d (d = q + offset, θ fixed).
+
+use nalgebra::{Translation3, UnitQuaternion, Vector3};
+use serde::{Deserialize, Serialize};
+
+use crate::error::{MechanismError, finite};
+use crate::model::{JointKind, Model, ModelBuilder, Pose};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Convention {
+    StandardDh,
+    ModifiedDh,
+}
+
+/// One row of a DH table. For a revolute joint `theta` is unused (the
+/// joint sets it); for a prismatic joint `d` is unused.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DhRow {
+    pub name: String,
+    pub kind: JointKind,
+    pub a: f64,
+    pub alpha: f64,
+    pub d: f64,
+    pub theta: f64,
+    pub offset: f64,
+    pub limits: Option<[f64; 2]>,
+}
+
+pub(crate) fn rot_x(angle: f64) -> Pose {
+    Pose::from_parts(
+        Translation3::identity(),
+        UnitQuaternion::from_axis_angle(&Vector3::x_axis(), angle),
+    )
+}
+
+pub(crate) fn rot_z(angle: f64) -> Pose {
+    Pose::from_parts(
+        Translation3::identity(),
+        UnitQuaternion::from_axis_angle(&Vector3::z_axis(), angle),
+    )
+}
+
+pub(crate) fn shift(x: f64, y: f64, z: f64) -> Pose {
+    Pose::translation(x, y, z)
+}
+
+/// Build a serial chain: world → `base` (fixed at `base`) → one body per
+/// row, named after the row → a `tool` frame at `tool` on the last body.
+pub fn chain(
+    name: &str,
+    convention: Convention,
+    rows: &[DhRow],
+    base: Pose,
+    tool: Pose,
+) -> Result<Model, MechanismError> {
+    let mut b = ModelBuilder::new(name);
+    let mut parent = b.joint(
+        "base",
+        JointKind::Fixed,
+        0,
+        base,
+        Vector3::z_axis(),
+        0.0,
+        Pose::identity(),
+        None,
+    );
+    for (i, r) in rows.iter().enumerate() {
+        for (field, v) in [
+            ("a", r.a),
+            ("alpha", r.alpha),
+            ("d", r.d),
+            ("theta", r.theta),
+            ("offset", r.offset),
+        ] {
+            finite(&format!("joints[{i}].{field}"), v)?;
+        }
+        if r.kind == JointKind::Fixed {
+            return Err(MechanismError::new(
+                format!("joints[{i}].type"),
+                "a DH row must be revolute, continuous or prismatic",
+            ));
+        }
+        let prismatic = r.kind == JointKind::Prismatic;
+        let (origin, post) = match (convention, prismatic) {
+            (Convention::StandardDh, false) => (
+                Pose::identity(),
+                shift(0.0, 0.0, r.d) * shift(r.a, 0.0, 0.0) * rot_x(r.alpha),
+            ),
+            (Convention::StandardDh, true) => {
+                (rot_z(r.theta), shift(r.a, 0.0, 0.0) * rot_x(r.alpha))
+            }
+            // Rz(θ) and Tz(d) commute, so the fixed part can go first.
+            (Convention::ModifiedDh, false) => (
+                rot_x(r.alpha) * shift(r.a, 0.0, 0.0) * shift(0.0, 0.0, r.d),
+                Pose::identity(),
+            ),
+            (Convention::ModifiedDh, true) => (
+                rot_x(r.alpha) * shift(r.a, 0.0, 0.0) * rot_z(r.theta),
+                Pose::identity(),
+            ),
+        };
+        parent = b.joint(
+            r.name.clone(),
+            r.kind,
+            parent,
+            origin,
+            Vector3::z_axis(),
+            r.offset,
+            post,
+            r.limits,
+        );
+    }
+    b.frame("tool", parent, tool);
+    b.build()
+}

@@ -1,0 +1,386 @@
+//! The mechanism model: bodies joined by joints into one tree rooted in the
+//! world frame, plus named frames. The model is stateless — it says how the
+//! parts fit, never where they are — so any number of views and solvers can
+//! share one model, each with its own joint values (a [`crate::State`]).
+
+use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+use serde::{Deserialize, Serialize};
+
+use crate::error::MechanismError;
+
+/// A rigid transform: rotation and translation.
+pub type Pose = Isometry3<f64>;
+
+/// How a joint lets its child body move.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum JointKind {
+    /// Turns about its axis, within limits.
+    Revolute,
+    /// Turns about its axis without limits (a wheel).
+    Continuous,
+    /// Slides along its axis.
+    Prismatic,
+    /// Does not move: bolts two bodies together.
+    Fixed,
+}
+
+impl JointKind {
+    /// Whether the joint has a variable (a column in the state).
+    pub fn moves(self) -> bool {
+        !matches!(self, JointKind::Fixed)
+    }
+}
+
+/// A joint between a parent and a child body. The child's frame is
+/// `parent · origin · motion(q + offset) · post`, where the motion turns
+/// about or slides along `axis` (given in the joint frame).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Joint {
+    pub name: String,
+    pub kind: JointKind,
+    pub parent: usize,
+    pub child: usize,
+    pub origin: Pose,
+    pub axis: Unit<Vector3<f64>>,
+    pub offset: f64,
+    pub post: Pose,
+    /// Lower and upper limit (rad or m), if any.
+    pub limits: Option<[f64; 2]>,
+}
+
+impl Joint {
+    /// The joint's own motion for joint value `q`.
+    #[inline]
+    pub fn motion(&self, q: f64) -> Pose {
+        let v = q + self.offset;
+        match self.kind {
+            JointKind::Revolute | JointKind::Continuous => Pose::from_parts(
+                Translation3::identity(),
+                UnitQuaternion::from_axis_angle(&self.axis, v),
+            ),
+            JointKind::Prismatic => Pose::from_parts(
+                Translation3::from(self.axis.into_inner() * v),
+                UnitQuaternion::identity(),
+            ),
+            JointKind::Fixed => Pose::identity(),
+        }
+    }
+}
+
+/// A rigid part. Body 0 is the world.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Body {
+    pub name: String,
+}
+
+/// A named frame fixed to a body (a port: where a tool, sensor or other
+/// mechanism attaches).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    pub name: String,
+    pub body: usize,
+    pub offset: Pose,
+}
+
+/// A validated mechanism: a tree of bodies and joints, and named frames.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Model {
+    pub(crate) name: String,
+    pub(crate) bodies: Vec<Body>,
+    /// Ordered so that every joint's parent body is placed before it.
+    pub(crate) joints: Vec<Joint>,
+    pub(crate) frames: Vec<Frame>,
+    /// The joint behind each state variable.
+    pub(crate) variables: Vec<usize>,
+    /// Each joint's variable, if it moves.
+    pub(crate) variable_of: Vec<Option<usize>>,
+    /// For each body, the joints from the world down to it, in order.
+    pub(crate) chains: Vec<Vec<usize>>,
+}
+
+/// Builds a [`Model`] part by part; [`ModelBuilder::build`] checks it.
+#[derive(Debug, Clone, Default)]
+pub struct ModelBuilder {
+    name: String,
+    bodies: Vec<Body>,
+    joints: Vec<Joint>,
+    frames: Vec<Frame>,
+}
+
+/// The world frame's name.
+pub const WORLD: &str = "world";
+
+impl ModelBuilder {
+    pub fn new(name: impl Into<String>) -> Self {
+        Self {
+            name: name.into(),
+            bodies: vec![Body { name: WORLD.into() }],
+            joints: Vec::new(),
+            frames: Vec::new(),
+        }
+    }
+
+    /// Add a body; returns its index.
+    pub fn body(&mut self, name: impl Into<String>) -> usize {
+        self.bodies.push(Body { name: name.into() });
+        self.bodies.len() - 1
+    }
+
+    /// Add a joint from `parent` to a new body named after the joint;
+    /// returns the new body's index.
+    #[allow(clippy::too_many_arguments)]
+    pub fn joint(
+        &mut self,
+        name: impl Into<String>,
+        kind: JointKind,
+        parent: usize,
+        origin: Pose,
+        axis: Unit<Vector3<f64>>,
+        offset: f64,
+        post: Pose,
+        limits: Option<[f64; 2]>,
+    ) -> usize {
+        let name = name.into();
+        let child = self.body(name.clone());
+        self.joints.push(Joint {
+            name,
+            kind,
+            parent,
+            child,
+            origin,
+            axis,
+            offset,
+            post,
+            limits,
+        });
+        child
+    }
+
+    /// Add a named frame on `body`.
+    pub fn frame(&mut self, name: impl Into<String>, body: usize, offset: Pose) {
+        self.frames.push(Frame {
+            name: name.into(),
+            body,
+            offset,
+        });
+    }
+
+    /// Check the tree and order it for traversal.
+    pub fn build(self) -> Result<Model, MechanismError> {
+        let n = self.bodies.len();
+        let mut names = std::collections::HashSet::new();
+        for (i, b) in self.bodies.iter().enumerate() {
+            if !names.insert(b.name.as_str()) {
+                return Err(MechanismError::new(
+                    format!("bodies[{i}].name"),
+                    format!("`{}` is used twice", b.name),
+                ));
+            }
+        }
+        for (i, f) in self.frames.iter().enumerate() {
+            if f.body >= n {
+                return Err(MechanismError::new(
+                    format!("frames[{i}].body"),
+                    "no such body",
+                ));
+            }
+            if !names.insert(f.name.as_str()) {
+                return Err(MechanismError::new(
+                    format!("frames[{i}].name"),
+                    format!("`{}` is used twice", f.name),
+                ));
+            }
+        }
+        let mut parent_joint: Vec<Option<usize>> = vec![None; n];
+        for (i, j) in self.joints.iter().enumerate() {
+            let field = |f: &str| format!("joints[{i}].{f}");
+            if j.parent >= n || j.child >= n || j.child == 0 {
+                return Err(MechanismError::new(
+                    field("parent"),
+                    "joins a body that does not exist",
+                ));
+            }
+            if parent_joint[j.child].replace(i).is_some() {
+                return Err(MechanismError::new(
+                    field("child"),
+                    format!(
+                        "body `{}` already hangs from another joint",
+                        self.bodies[j.child].name
+                    ),
+                ));
+            }
+            if let Some([lo, hi]) = j.limits
+                && !(lo.is_finite() && hi.is_finite() && lo <= hi)
+            {
+                return Err(MechanismError::new(
+                    field("limits"),
+                    format!("need lower ≤ upper, got [{lo}, {hi}]"),
+                ));
+            }
+            let o = j
+                .origin
+                .translation
+                .vector
+                .iter()
+                .chain(j.post.translation.vector.iter());
+            if o.chain(j.axis.iter())
+                .chain([j.offset].iter())
+                .any(|v| !v.is_finite())
+            {
+                return Err(MechanismError::new(
+                    field("origin"),
+                    "must be finite numbers",
+                ));
+            }
+        }
+        // Chains from the world: follow parents up; a cycle never reaches 0.
+        let mut chains = vec![Vec::new(); n];
+        for (b, chain) in chains.iter_mut().enumerate().skip(1) {
+            let mut at = b;
+            while at != 0 {
+                let Some(j) = parent_joint[at] else {
+                    return Err(MechanismError::new(
+                        format!("bodies[{b}]"),
+                        format!("`{}` is not connected to the world", self.bodies[b].name),
+                    ));
+                };
+                if chain.len() > self.joints.len() {
+                    return Err(MechanismError::new(
+                        format!("bodies[{b}]"),
+                        "the joints form a loop",
+                    ));
+                }
+                chain.push(j);
+                at = self.joints[j].parent;
+            }
+            chain.reverse();
+        }
+        // Order joints by depth so parents come first, then renumber chains.
+        let mut order: Vec<usize> = (0..self.joints.len()).collect();
+        order.sort_by_key(|&j| chains[self.joints[j].child].len());
+        let mut new_index = vec![0; self.joints.len()];
+        for (new, &old) in order.iter().enumerate() {
+            new_index[old] = new;
+        }
+        let joints: Vec<Joint> = order.iter().map(|&j| self.joints[j].clone()).collect();
+        for chain in &mut chains {
+            for j in chain.iter_mut() {
+                *j = new_index[*j];
+            }
+        }
+        let mut variables = Vec::new();
+        let mut variable_of = vec![None; joints.len()];
+        for (i, j) in joints.iter().enumerate() {
+            if j.kind.moves() {
+                variable_of[i] = Some(variables.len());
+                variables.push(i);
+            }
+        }
+        Ok(Model {
+            name: self.name,
+            bodies: self.bodies,
+            joints,
+            frames: self.frames,
+            variables,
+            variable_of,
+            chains,
+        })
+    }
+}
+
+impl Model {
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+
+    pub fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+
+    pub fn frames(&self) -> &[Frame] {
+        &self.frames
+    }
+
+    /// Number of joint variables (the state's length).
+    pub fn dof(&self) -> usize {
+        self.variables.len()
+    }
+
+    /// The joint behind state variable `i`.
+    pub fn variable_joint(&self, i: usize) -> Option<&Joint> {
+        self.variables.get(i).map(|&j| &self.joints[j])
+    }
+
+    /// A frame by name: a body's own frame, or a named frame.
+    pub fn frame(&self, name: &str) -> Result<FrameRef, MechanismError> {
+        if let Some(b) = self.bodies.iter().position(|b| b.name == name) {
+            return Ok(FrameRef {
+                body: b,
+                offset: Pose::identity(),
+            });
+        }
+        if let Some(f) = self.frames.iter().find(|f| f.name == name) {
+            return Ok(FrameRef {
+                body: f.body,
+                offset: f.offset,
+            });
+        }
+        let mut known: Vec<&str> = self.bodies.iter().map(|b| b.name.as_str()).collect();
+        known.extend(self.frames.iter().map(|f| f.name.as_str()));
+        Err(MechanismError::new(
+            "frame",
+            format!("no frame named `{name}` (known: {})", known.join(", ")),
+        ))
+    }
+
+    /// Joint values inside every limit, all zero where zero is allowed.
+    pub fn zero_state(&self) -> Vec<f64> {
+        self.variables
+            .iter()
+            .map(|&j| match self.joints[j].limits {
+                Some([lo, hi]) => 0.0f64.clamp(lo, hi),
+                None => 0.0,
+            })
+            .collect()
+    }
+
+    /// Check a state's length and numbers.
+    pub fn check_state(&self, q: &[f64]) -> Result<(), MechanismError> {
+        if q.len() != self.dof() {
+            return Err(MechanismError::new(
+                "q",
+                format!(
+                    "`{}` has {} joint variables, got {} values",
+                    self.name,
+                    self.dof(),
+                    q.len()
+                ),
+            ));
+        }
+        for (i, v) in q.iter().enumerate() {
+            crate::error::finite(&format!("q[{i}]"), *v)?;
+        }
+        Ok(())
+    }
+
+    /// Clamp each value into its joint's limits.
+    pub fn clamp(&self, q: &mut [f64]) {
+        for (v, &j) in q.iter_mut().zip(&self.variables) {
+            if let Some([lo, hi]) = self.joints[j].limits {
+                *v = v.clamp(lo, hi);
+            }
+        }
+    }
+}
+
+/// A frame resolved to a body and a fixed offset on it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameRef {
+    pub body: usize,
+    pub offset: Pose,
+}
