@@ -77,22 +77,17 @@ impl Model {
         jac: &mut DMatrix<f64>,
         row: usize,
     ) {
-        // Walk the chain once, remembering each joint's frame.
-        let chain = &self.chains[frame.body];
-        let mut axes: Vec<(usize, Pose)> = Vec::with_capacity(chain.len());
+        // First the frame's position, then a second walk for the axes
+        // (no scratch list of frames to allocate).
+        let p: Vector3<f64> = self.pose_unchecked(q, frame).translation.vector;
         let mut t = Pose::identity();
-        for &j in chain {
+        for &j in &self.chains[frame.body] {
             let joint = &self.joints[j];
             let at = t * joint.origin;
-            axes.push((j, at));
             t = at * joint.motion(self.value(q, j)) * joint.post;
-        }
-        let p: Vector3<f64> = (t * frame.offset).translation.vector;
-        for (j, at) in axes {
             let Some(v) = self.variable_of[j] else {
                 continue;
             };
-            let joint = &self.joints[j];
             let z = at.rotation * joint.axis.into_inner();
             let (linear, angular) = match joint.kind {
                 crate::JointKind::Prismatic => (z, Vector3::zeros()),
