@@ -495,16 +495,7 @@ fn fk_and_ik_on_the_puma() {
 fn fk_reads_the_contract_model_file() {
     let path = robot_file(
         "contract.model.json",
-        r#"{
-  "name": "puma560",
-  "convention": "standard_dh",
-  "joints": [
-    { "name": "q1", "type": "revolute", "a": 0.0, "d": 0.6718, "alpha_deg": 90, "offset_deg": 0, "limits_deg": [-160, 160] },
-    { "name": "q3", "type": "prismatic", "a": 0.0, "theta_deg": 0, "alpha_deg": 0, "offset": 0.0, "limits": [0.0, 0.5] }
-  ],
-  "base": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],
-  "tool": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]
-}"#,
+        kinolab_mechanism::file::CONTRACT_EXAMPLE,
     );
     let out = json(&["fk", &path, "--q", "0,0.2"]);
     assert_eq!(out["matrix"][1][3], -0.2);

@@ -44,6 +44,18 @@ struct ModelFile {
     tool: Option<[[f64; 4]; 4]>,
 }
 
+/// The model-file example of the command-line contract, verbatim.
+pub const CONTRACT_EXAMPLE: &str = r#"{
+  "name": "puma560",
+  "convention": "standard_dh",
+  "joints": [
+    { "name": "q1", "type": "revolute", "a": 0.0, "d": 0.6718, "alpha_deg": 90, "offset_deg": 0, "limits_deg": [-160, 160] },
+    { "name": "q3", "type": "prismatic", "a": 0.0, "theta_deg": 0, "alpha_deg": 0, "offset": 0.0, "limits": [0.0, 0.5] }
+  ],
+  "base": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],
+  "tool": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]
+}"#;
+
 /// A 4×4 homogeneous matrix as a pose; it must be a rotation and a shift.
 pub fn pose_from_matrix(field: &str, m: &[[f64; 4]; 4]) -> Result<Pose, MechanismError> {
     use nalgebra::{Matrix3, Rotation3, Translation3, UnitQuaternion};
@@ -141,16 +153,7 @@ pub fn from_json(text: &str) -> Result<Model, MechanismError> {
 mod tests {
     use super::*;
 
-    const CONTRACT: &str = r#"{
-  "name": "puma560",
-  "convention": "standard_dh",
-  "joints": [
-    { "name": "q1", "type": "revolute", "a": 0.0, "d": 0.6718, "alpha_deg": 90, "offset_deg": 0, "limits_deg": [-160, 160] },
-    { "name": "q3", "type": "prismatic", "a": 0.0, "theta_deg": 0, "alpha_deg": 0, "offset": 0.0, "limits": [0.0, 0.5] }
-  ],
-  "base": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]],
-  "tool": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]
-}"#;
+    const CONTRACT: &str = CONTRACT_EXAMPLE;
 
     #[test]
     fn the_contract_example_loads() {
