@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use kinolab_mechanism::{Goal, Model, Options, Target, Vector3, report};
+use kinolab_mechanism::{Goal, MechanismError, Model, Options, Target, Vector3, report};
 use serde_json::Value;
 
 use crate::{Failure, numbers};
@@ -16,7 +16,21 @@ fn load(path: &Path) -> Result<Model, Failure> {
     }
     let text =
         std::fs::read_to_string(path).map_err(|e| Failure(format!("{shown}: cannot read: {e}")))?;
-    kinolab_mechanism::file::from_json(&text).map_err(|e| Failure(format!("{shown}: {e}")))
+    read_model(path, &text, 0).map_err(|e| Failure(format!("{shown}: {e}")))
+}
+
+/// Parse a model file whose mounted sub-mechanisms are files next to it.
+fn read_model(path: &Path, text: &str, depth: usize) -> Result<Model, MechanismError> {
+    let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    kinolab_mechanism::file::from_json_with(text, &mut |name: &str| {
+        if depth >= 16 {
+            return Err(MechanismError::new("", "mounts nested more than 16 deep"));
+        }
+        let sub = folder.join(name);
+        let text = std::fs::read_to_string(&sub)
+            .map_err(|e| MechanismError::new("", format!("cannot read {}: {e}", sub.display())))?;
+        read_model(&sub, &text, depth + 1)
+    })
 }
 
 fn frame_of(
@@ -45,7 +59,12 @@ fn joint_values(option: &str, model: &Model, text: &str) -> Result<Vec<f64>, Fai
 
 pub(crate) fn fk(path: &Path, q: &str, frame: Option<&str>) -> Result<Value, Failure> {
     let model = load(path)?;
-    let q = joint_values("q", &model, q)?;
+    let mut q = joint_values("q", &model, q)?;
+    // Followers follow their leaders and closed chains close, whatever
+    // values were given for them.
+    model
+        .close_loops(&mut q)
+        .map_err(|e| Failure(format!("--q: {e}")))?;
     let (name, f) = frame_of(&model, frame)?;
     let pose = model
         .pose(&q, &f)
@@ -97,7 +116,7 @@ pub(crate) fn ik(
         None => model.zero_state(),
     };
     let solution = model
-        .solve(&[Goal { frame: f, target }], &seed, &Options::default())
+        .solve(&[Goal::new(f, target)], &seed, &Options::default())
         .map_err(|e| Failure(format!("--seed: {e}")))?;
     Ok(report::inverse(&solution))
 }

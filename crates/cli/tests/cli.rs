@@ -532,3 +532,51 @@ fn fk_reads_the_contract_model_file() {
         "broken.model.json: joints[0].type: unknown variant `hinge`",
     );
 }
+
+#[test]
+fn a_model_file_mounts_another_file_next_to_it() {
+    robot_file(
+        "finger.model.json",
+        r#"{"name":"finger","convention":"transforms","joints":[
+            {"name":"knuckle","type":"revolute","parent":"world"},
+            {"name":"tip","type":"fixed","origin":{"xyz":[0.1,0,0]}}]}"#,
+    );
+    let hand = robot_file(
+        "hand.model.json",
+        r#"{"name":"hand","convention":"transforms",
+            "joints":[{"name":"palm","type":"fixed","origin":{"xyz":[0,0,1]}}],
+            "frames":[{"name":"left","body":"palm","at":{"xyz":[0,0.05,0]}},
+                      {"name":"right","body":"palm","at":{"xyz":[0,-0.05,0],"rpy_deg":[0,0,180]}}],
+            "mounts":[{"name":"l","model":"finger.model.json","at":"left"},
+                      {"name":"r","model":"finger.model.json","at":"right"}],
+            "couplings":[{"follower":"r/knuckle","leader":"l/knuckle"}]}"#,
+    );
+    // Both fingers turn together; the right one is mounted facing back, so
+    // the same turn mirrors the left finger.
+    let left = json(&[
+        "fk",
+        &hand,
+        "--q",
+        "1.5707963267948966,0",
+        "--frame",
+        "l/tip",
+    ]);
+    let right = json(&[
+        "fk",
+        &hand,
+        "--q",
+        "1.5707963267948966,0",
+        "--frame",
+        "r/tip",
+    ]);
+    let at = |v: &Value, i: usize| v["matrix"][i][3].as_f64().unwrap();
+    assert!(at(&left, 0).abs() < 1e-12 && (at(&left, 1) - 0.15).abs() < 1e-12);
+    assert!(at(&right, 0).abs() < 1e-12 && (at(&right, 1) + 0.15).abs() < 1e-12);
+    assert!((at(&right, 2) - 1.0).abs() < 1e-12);
+    let missing = robot_file(
+        "lonely.model.json",
+        r#"{"name":"x","convention":"transforms","joints":[{"name":"a","type":"fixed"}],
+            "mounts":[{"name":"m","model":"nowhere.model.json","at":"tool"}]}"#,
+    );
+    fails_with(&["fk", &missing, "--q", ""], "mounts[0].model: cannot read");
+}

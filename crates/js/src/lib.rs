@@ -9,11 +9,16 @@
 //! kinolab.driveWheels("f,-90,180,1,1;f,90,0,1,1", [4, 2]).twist; // [3, 0, 1]
 //! kinolab.simulate({ controller: { kind: "polar", k_rho: 3, k_alpha: 8, k_beta: -1.5 },
 //!   start: { x: -1, y: 0.5, theta_deg: 0 }, goal: { x: 0, y: 0, theta_deg: 0 } }).reached; // true
+//! const arm = kinolab.Mechanism.load("catalogue:planar-2r");
+//! arm.ik({ position: [1.2, 0.6, 0] }).converged;        // true
 //! ```
 //!
 //! Every function computes with the same core crates as the lab and the
 //! command line. Bad input throws an `Error` whose message names the field.
 
+mod mechanism;
+
+pub use mechanism::{Mechanism, mechanisms};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 

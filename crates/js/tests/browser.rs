@@ -132,3 +132,52 @@ fn controller_through_the_js_api() {
         "{message}"
     );
 }
+
+fn parse(json: &str) -> JsValue {
+    js_sys_parse(json)
+}
+
+#[wasm_bindgen::prelude::wasm_bindgen]
+extern "C" {
+    #[wasm_bindgen(js_namespace = JSON, js_name = parse)]
+    fn js_sys_parse(text: &str) -> JsValue;
+}
+
+#[wasm_bindgen_test]
+fn mechanisms_through_the_js_api() {
+    let puma = kinolab_js::Mechanism::load(JsValue::from_str("catalogue:puma560")).unwrap();
+    let fk = puma.fk(vec![0.0; 6], None).unwrap();
+    let row = js_sys_get(&get(&fk, "matrix"), "0");
+    assert!((js_sys_get(&row, "3").as_f64().unwrap() - 0.4521).abs() < 1e-12);
+
+    let arm = kinolab_js::Mechanism::load(JsValue::from_str("planar-2r")).unwrap();
+    let s = arm.ik(parse(r#"{"position":[1.2,0.6,0]}"#)).unwrap();
+    assert_eq!(get(&s, "converged").as_bool(), Some(true));
+    let jac = arm.jacobian(vec![0.0, 0.5], None).unwrap();
+    // ∂y/∂q1 at q = (0, 0.5): the arm's reach along x, 1 + 0.8 cos 0.5.
+    let vy = js_sys_get(&get(&jac, "rows"), "1");
+    let want = 1.0 + 0.8 * 0.5f64.cos();
+    assert!((js_sys_get(&vy, "0").as_f64().unwrap() - want).abs() < 1e-12);
+
+    let hit = arm
+        .collide(
+            vec![0.0, 0.0],
+            "plan",
+            parse(r#"[{"circle":[1.5,0.05,0.1]}]"#),
+        )
+        .unwrap();
+    assert_eq!(get(&hit, "colliding").as_bool(), Some(true));
+
+    let linkage = kinolab_js::Mechanism::load(JsValue::from_str("four-bar")).unwrap();
+    let info = linkage.describe().unwrap();
+    assert_eq!(get(&info, "dof").as_f64(), Some(3.0));
+
+    let Err(bad) = kinolab_js::Mechanism::load(JsValue::from_str("catalogue:warp-drive")) else {
+        panic!("accepted an unknown mechanism");
+    };
+    let message = get(&JsValue::from(bad), "message").as_string().unwrap();
+    assert!(
+        message.starts_with("model: no built-in mechanism"),
+        "{message}"
+    );
+}

@@ -62,17 +62,20 @@ pub fn chain(
     base: Pose,
     tool: Pose,
 ) -> Result<Model, MechanismError> {
+    chain_builder(name, convention, rows, base, tool)?.build()
+}
+
+/// [`chain`] before it is checked, so more can be added (shapes,
+/// commands). Body `i + 2` carries row `i` (0 is the world, 1 the base).
+pub fn chain_builder(
+    name: &str,
+    convention: Convention,
+    rows: &[DhRow],
+    base: Pose,
+    tool: Pose,
+) -> Result<ModelBuilder, MechanismError> {
     let mut b = ModelBuilder::new(name);
-    let mut parent = b.joint(
-        "base",
-        JointKind::Fixed,
-        0,
-        base,
-        Vector3::z_axis(),
-        0.0,
-        Pose::identity(),
-        None,
-    );
+    let mut parent = b.fixed_base(base);
     for (i, r) in rows.iter().enumerate() {
         for (field, v) in [
             ("a", r.a),
@@ -120,5 +123,5 @@ pub fn chain(
         );
     }
     b.frame("tool", parent, tool);
-    b.build()
+    Ok(b)
 }

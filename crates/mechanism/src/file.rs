@@ -1,47 +1,180 @@
-//! Model files (`*.model.json`) in the command-line contract's format:
-//! a serial chain in standard or modified DH, with optional base and tool
-//! transforms. Angles are in degrees (`_deg`); errors name the JSON path.
+//! Model files (`*.model.json`). The command-line contract's format — a
+//! serial chain in standard or modified DH with optional base and tool
+//! transforms — extended for everything else a mechanism can be:
+//!
+//! - `"convention": "transforms"`: each joint placed on its `parent` by an
+//!   `origin` (`xyz`, `rpy_deg`) and turning about or sliding along `axis`,
+//!   so trees are possible;
+//! - `"convention": "zero_position"`: product of exponentials — each
+//!   joint's `axis` and a `point` on it with every joint at zero, and the
+//!   tool's pose at zero;
+//! - `frames` (ports), `mounts` (another model, from a file or the
+//!   catalogue, mounted at one of this model's frames under a name),
+//!   `couplings`, `loops`, `shapes` (capsules) and `ignore` (body pairs).
+//!
+//! Angles are in degrees (`_deg`); errors name the JSON path.
 
+use nalgebra::{Translation3, Unit, UnitQuaternion, Vector3};
 use serde::Deserialize;
 
-use crate::dh::{Convention, DhRow, chain};
-use crate::error::MechanismError;
-use crate::model::{JointKind, Model, Pose};
+use crate::dh::{Convention, DhRow, chain_builder};
+use crate::error::{MechanismError, finite};
+use crate::model::{JointKind, Model, ModelBuilder, Pose};
 
+/// How a file describes its joints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum Description {
+    /// Standard Denavit–Hartenberg rows (the contract's format).
+    StandardDh,
+    /// Modified (Craig) DH rows (the contract's format).
+    ModifiedDh,
+    /// Each joint placed on its parent by a plain transform, with an axis.
+    Transforms,
+    /// Zero-position (product of exponentials): each joint's axis and a
+    /// point on it, in the world, with every joint at zero.
+    ZeroPosition,
+}
+
+/// A pose written as a shift and roll–pitch–yaw angles (applied about x,
+/// then y, then z of the parent frame).
+#[derive(Debug, Clone, Copy, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PoseFile {
+    #[serde(default)]
+    xyz: [f64; 3],
+    #[serde(default)]
+    rpy_deg: [f64; 3],
+}
+
+impl PoseFile {
+    fn pose(&self, field: &str) -> Result<Pose, MechanismError> {
+        for v in self.xyz.iter().chain(&self.rpy_deg) {
+            finite(field, *v)?;
+        }
+        let [r, p, y] = self.rpy_deg.map(f64::to_radians);
+        Ok(Pose::from_parts(
+            Translation3::from(Vector3::from(self.xyz)),
+            UnitQuaternion::from_euler_angles(r, p, y),
+        ))
+    }
+}
+
+/// One joint. Which fields apply depends on the description; the others
+/// must be left out.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct JointFile {
     name: String,
     #[serde(rename = "type")]
     kind: JointKind,
-    #[serde(default)]
-    a: f64,
-    #[serde(default)]
-    alpha_deg: f64,
+    // DH rows.
+    a: Option<f64>,
+    alpha_deg: Option<f64>,
     /// Revolute: the fixed offset d. Prismatic: unused.
-    #[serde(default)]
-    d: f64,
+    d: Option<f64>,
     /// Prismatic: the fixed angle θ. Revolute: unused.
-    #[serde(default)]
-    theta_deg: f64,
+    theta_deg: Option<f64>,
+    // Transforms and zero position.
+    /// The body this joint hangs from (a joint's name, `base` or
+    /// `world`); the previous joint when left out.
+    parent: Option<String>,
+    /// Transforms: where the joint sits on its parent.
+    origin: Option<PoseFile>,
+    /// The joint's axis (unit length not required).
+    axis: Option<[f64; 3]>,
+    /// Zero position: a point on the axis, in the world.
+    point: Option<[f64; 3]>,
+    // All.
     /// Revolute: θ = q + offset.
-    #[serde(default)]
-    offset_deg: f64,
+    offset_deg: Option<f64>,
     /// Prismatic: d = q + offset.
-    #[serde(default)]
-    offset: f64,
+    offset: Option<f64>,
     limits_deg: Option<[f64; 2]>,
     limits: Option<[f64; 2]>,
+}
+
+/// A named frame on a body: a port where tools or other mechanisms attach.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FrameFile {
+    name: String,
+    body: String,
+    #[serde(default)]
+    at: PoseFile,
+}
+
+/// Another mechanism mounted at one of this model's frames.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MountFile {
+    /// The prefix of everything mounted (`left-front/coxa`).
+    name: String,
+    /// The sub-mechanism: a file name the loader resolves, or
+    /// `catalogue:<id>`.
+    model: String,
+    /// The mount point: a frame of this model.
+    at: String,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CouplingFile {
+    follower: String,
+    leader: String,
+    #[serde(default = "one")]
+    ratio: f64,
+    #[serde(default)]
+    offset: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LoopFile {
+    name: String,
+    a: String,
+    b: String,
+    #[serde(default)]
+    whole_pose: bool,
+    passive: Vec<String>,
+}
+
+/// A bounding capsule on a body, ends in the body's frame.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ShapeFile {
+    body: String,
+    a: [f64; 3],
+    b: [f64; 3],
+    radius: f64,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ModelFile {
     name: String,
-    convention: Convention,
+    convention: Description,
     joints: Vec<JointFile>,
     base: Option<[[f64; 4]; 4]>,
+    /// The tool frame on the last joint's body; for the zero-position
+    /// description, the tool's pose in the world with every joint at zero.
     tool: Option<[[f64; 4]; 4]>,
+    #[serde(default)]
+    frames: Vec<FrameFile>,
+    #[serde(default)]
+    mounts: Vec<MountFile>,
+    #[serde(default)]
+    couplings: Vec<CouplingFile>,
+    #[serde(default)]
+    loops: Vec<LoopFile>,
+    #[serde(default)]
+    shapes: Vec<ShapeFile>,
+    #[serde(default)]
+    ignore: Vec<[String; 2]>,
 }
 
 /// The model-file example of the command-line contract, verbatim.
@@ -84,10 +217,9 @@ pub fn matrix_of(p: &Pose) -> [[f64; 4]; 4] {
     std::array::from_fn(|i| std::array::from_fn(|j| h[(i, j)]))
 }
 
-/// Parse a model file.
-pub fn from_json(text: &str) -> Result<Model, MechanismError> {
+fn parse(text: &str) -> Result<ModelFile, MechanismError> {
     let mut de = serde_json::Deserializer::from_str(text);
-    let file: ModelFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+    serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let message = e.into_inner().to_string();
         let message = message
@@ -96,57 +228,241 @@ pub fn from_json(text: &str) -> Result<Model, MechanismError> {
             .unwrap_or(&message)
             .to_string();
         MechanismError::new(if path == "." { String::new() } else { path }, message)
-    })?;
-    if file.joints.is_empty() {
+    })
+}
+
+/// Parse a model file. Mounted sub-mechanisms may only come from the
+/// catalogue (`catalogue:<id>`); see [`from_json_with`] for files.
+pub fn from_json(text: &str) -> Result<Model, MechanismError> {
+    from_json_with(text, &mut |name: &str| {
+        Err(MechanismError::new(
+            "",
+            format!("cannot open `{name}` here; use `catalogue:<id>`"),
+        ))
+    })
+}
+
+/// Parse a model file; `resolve` turns a mount's `model` name into a model
+/// (the command line reads the file next to this one). `catalogue:<id>`
+/// always works.
+pub fn from_json_with(
+    text: &str,
+    resolve: &mut dyn FnMut(&str) -> Result<Model, MechanismError>,
+) -> Result<Model, MechanismError> {
+    let file = parse(text)?;
+    if file.joints.is_empty() && file.mounts.is_empty() {
         return Err(MechanismError::new(
             "joints",
-            "a model needs at least one joint",
+            "a model needs at least one joint or mount",
         ));
-    }
-    let mut rows = Vec::with_capacity(file.joints.len());
-    for (i, j) in file.joints.iter().enumerate() {
-        let prismatic = j.kind == JointKind::Prismatic;
-        let limits = match (prismatic, j.limits_deg, j.limits) {
-            (false, Some([lo, hi]), None) => Some([lo.to_radians(), hi.to_radians()]),
-            (true, None, Some(l)) => Some(l),
-            (_, None, None) => None,
-            (false, _, Some(_)) => {
-                return Err(MechanismError::new(
-                    format!("joints[{i}].limits"),
-                    "a revolute joint's limits are `limits_deg`",
-                ));
-            }
-            (true, Some(_), _) => {
-                return Err(MechanismError::new(
-                    format!("joints[{i}].limits_deg"),
-                    "a prismatic joint's limits are `limits` in metres",
-                ));
-            }
-        };
-        rows.push(DhRow {
-            name: j.name.clone(),
-            kind: j.kind,
-            a: j.a,
-            alpha: j.alpha_deg.to_radians(),
-            d: j.d,
-            theta: j.theta_deg.to_radians(),
-            offset: if prismatic {
-                j.offset
-            } else {
-                j.offset_deg.to_radians()
-            },
-            limits,
-        });
     }
     let base = file
         .base
         .as_ref()
         .map_or(Ok(Pose::identity()), |m| pose_from_matrix("base", m))?;
-    let tool = file
-        .tool
-        .as_ref()
-        .map_or(Ok(Pose::identity()), |m| pose_from_matrix("tool", m))?;
-    chain(&file.name, file.convention, &rows, base, tool)
+    let mut b = match file.convention {
+        Description::StandardDh | Description::ModifiedDh => {
+            let convention = if file.convention == Description::StandardDh {
+                Convention::StandardDh
+            } else {
+                Convention::ModifiedDh
+            };
+            let tool = file
+                .tool
+                .as_ref()
+                .map_or(Ok(Pose::identity()), |m| pose_from_matrix("tool", m))?;
+            chain_builder(&file.name, convention, &dh_rows(&file.joints)?, base, tool)?
+        }
+        Description::Transforms | Description::ZeroPosition => tree(&file, base)?,
+    };
+    for (i, f) in file.frames.iter().enumerate() {
+        let field = format!("frames[{i}]");
+        let body = body_index(&b, &f.body, &format!("{field}.body"))?;
+        b.frame(f.name.clone(), body, f.at.pose(&format!("{field}.at"))?);
+    }
+    for (i, m) in file.mounts.iter().enumerate() {
+        let field = format!("mounts[{i}]");
+        let sub = match m.model.strip_prefix("catalogue:") {
+            Some(id) => crate::catalogue::mechanism(id),
+            None => resolve(&m.model),
+        }
+        .map_err(|e| MechanismError::new(format!("{field}.model"), e.to_string()))?;
+        let Some(port) = b.frames.iter().find(|f| f.name == m.at) else {
+            return Err(MechanismError::new(
+                format!("{field}.at"),
+                format!("no frame named `{}` to mount on", m.at),
+            ));
+        };
+        let (on, at) = (port.body, port.offset);
+        b.mount(&sub, on, at, &m.name, None);
+    }
+    for c in &file.couplings {
+        b.couple(&c.follower, &c.leader, c.ratio, c.offset);
+    }
+    for l in &file.loops {
+        let passive: Vec<&str> = l.passive.iter().map(String::as_str).collect();
+        b.close_loop(&l.name, &l.a, &l.b, l.whole_pose, &passive);
+    }
+    for (i, sh) in file.shapes.iter().enumerate() {
+        let body = body_index(&b, &sh.body, &format!("shapes[{i}].body"))?;
+        b.shape(body, sh.a, sh.b, sh.radius);
+    }
+    for (i, [x, y]) in file.ignore.iter().enumerate() {
+        let x = body_index(&b, x, &format!("ignore[{i}]"))?;
+        let y = body_index(&b, y, &format!("ignore[{i}]"))?;
+        b.ignore_pair(x, y);
+    }
+    b.build()
+}
+
+fn body_index(b: &ModelBuilder, name: &str, field: &str) -> Result<usize, MechanismError> {
+    b.bodies
+        .iter()
+        .position(|x| x.name == name)
+        .ok_or_else(|| MechanismError::new(field, format!("no body named `{name}`")))
+}
+
+/// A joint's limits in radians or metres.
+fn limits(i: usize, j: &JointFile) -> Result<Option<[f64; 2]>, MechanismError> {
+    let prismatic = j.kind == JointKind::Prismatic;
+    match (prismatic, j.limits_deg, j.limits) {
+        (false, Some([lo, hi]), None) => Ok(Some([lo.to_radians(), hi.to_radians()])),
+        (true, None, Some(l)) => Ok(Some(l)),
+        (_, None, None) => Ok(None),
+        (false, _, Some(_)) => Err(MechanismError::new(
+            format!("joints[{i}].limits"),
+            "a revolute joint's limits are `limits_deg`",
+        )),
+        (true, Some(_), _) => Err(MechanismError::new(
+            format!("joints[{i}].limits_deg"),
+            "a prismatic joint's limits are `limits` in metres",
+        )),
+    }
+}
+
+fn offset(j: &JointFile) -> f64 {
+    if j.kind == JointKind::Prismatic {
+        j.offset.unwrap_or(0.0)
+    } else {
+        j.offset_deg.unwrap_or(0.0).to_radians()
+    }
+}
+
+/// Refuse a field that the description does not use.
+fn unused(i: usize, present: &[(&str, bool)], description: &str) -> Result<(), MechanismError> {
+    match present.iter().find(|(_, here)| *here) {
+        Some((name, _)) => Err(MechanismError::new(
+            format!("joints[{i}].{name}"),
+            format!("not part of a {description} description"),
+        )),
+        None => Ok(()),
+    }
+}
+
+fn dh_rows(joints: &[JointFile]) -> Result<Vec<DhRow>, MechanismError> {
+    let mut rows = Vec::with_capacity(joints.len());
+    for (i, j) in joints.iter().enumerate() {
+        unused(
+            i,
+            &[
+                ("parent", j.parent.is_some()),
+                ("origin", j.origin.is_some()),
+                ("axis", j.axis.is_some()),
+                ("point", j.point.is_some()),
+            ],
+            "DH",
+        )?;
+        rows.push(DhRow {
+            name: j.name.clone(),
+            kind: j.kind,
+            a: j.a.unwrap_or(0.0),
+            alpha: j.alpha_deg.unwrap_or(0.0).to_radians(),
+            d: j.d.unwrap_or(0.0),
+            theta: j.theta_deg.unwrap_or(0.0).to_radians(),
+            offset: offset(j),
+            limits: limits(i, j)?,
+        });
+    }
+    Ok(rows)
+}
+
+fn unit_axis(field: &str, v: [f64; 3]) -> Result<Unit<Vector3<f64>>, MechanismError> {
+    for x in v {
+        finite(field, x)?;
+    }
+    Unit::try_new(Vector3::from(v), 1e-9)
+        .ok_or_else(|| MechanismError::new(field, "an axis cannot be zero"))
+}
+
+/// Transforms and zero-position descriptions: a tree hung from `base`.
+fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
+    let zero_position = file.convention == Description::ZeroPosition;
+    let mut b = ModelBuilder::new(file.name.clone());
+    let base_body = b.fixed_base(base);
+    // Zero position: where each body's frame sits, relative to the base,
+    // with every joint at zero (its joint's point, axes as the base's).
+    let mut home: Vec<Vector3<f64>> = vec![Vector3::zeros(); 2];
+    let mut previous = base_body;
+    for (i, j) in file.joints.iter().enumerate() {
+        let field = |f: &str| format!("joints[{i}].{f}");
+        let dh_fields = [
+            ("a", j.a.is_some()),
+            ("alpha_deg", j.alpha_deg.is_some()),
+            ("d", j.d.is_some()),
+            ("theta_deg", j.theta_deg.is_some()),
+        ];
+        let parent = match &j.parent {
+            Some(p) => body_index(&b, p, &field("parent"))?,
+            None => previous,
+        };
+        let axis = unit_axis(&field("axis"), j.axis.unwrap_or([0.0, 0.0, 1.0]))?;
+        let origin = if zero_position {
+            unused(i, &dh_fields, "zero-position")?;
+            unused(i, &[("origin", j.origin.is_some())], "zero-position")?;
+            let point = match j.point {
+                Some(p) => {
+                    for v in p {
+                        finite(&field("point"), v)?;
+                    }
+                    Vector3::from(p)
+                }
+                None => home.get(parent).copied().unwrap_or_default(),
+            };
+            let from = home.get(parent).copied().unwrap_or_default();
+            home.push(point);
+            Pose::translation(point.x - from.x, point.y - from.y, point.z - from.z)
+        } else {
+            unused(i, &dh_fields, "transforms")?;
+            unused(i, &[("point", j.point.is_some())], "transforms")?;
+            j.origin.unwrap_or_default().pose(&field("origin"))?
+        };
+        previous = b.joint(
+            j.name.clone(),
+            j.kind,
+            parent,
+            origin,
+            axis,
+            offset(j),
+            Pose::identity(),
+            limits(i, j)?,
+        );
+    }
+    let tool = match &file.tool {
+        None => Pose::identity(),
+        Some(m) => {
+            let t = pose_from_matrix("tool", m)?;
+            if zero_position {
+                // M is the tool in the base frame at zero; the last body's
+                // frame then sits at its joint's point, unrotated.
+                let at = home.get(previous).copied().unwrap_or_default();
+                Pose::translation(-at.x, -at.y, -at.z) * t
+            } else {
+                t
+            }
+        }
+    };
+    b.frame("tool", previous, tool);
+    Ok(b)
 }
 
 #[cfg(test)]

@@ -22,11 +22,33 @@ pub enum Target {
     Orientation(UnitQuaternion<f64>),
 }
 
-/// A frame and its target, in the world.
+/// A frame and its target: in the world, or in another frame of the same
+/// mechanism (`relative_to`), which may itself move with the joints.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Goal {
     pub frame: FrameRef,
     pub target: Target,
+    pub relative_to: Option<FrameRef>,
+}
+
+impl Goal {
+    /// A target in the world frame.
+    pub fn new(frame: FrameRef, target: Target) -> Self {
+        Self {
+            frame,
+            target,
+            relative_to: None,
+        }
+    }
+
+    /// A target given in frame `base`.
+    pub fn relative(frame: FrameRef, target: Target, base: FrameRef) -> Self {
+        Self {
+            frame,
+            target,
+            relative_to: Some(base),
+        }
+    }
 }
 
 /// Limits on the search.
@@ -72,6 +94,15 @@ pub struct Solution {
     pub iterations: usize,
 }
 
+/// What one search works on: the goals, their stacked row count, and
+/// which variables may move.
+#[derive(Clone, Copy)]
+struct Problem<'a> {
+    goals: &'a [Goal],
+    m: usize,
+    movable: &'a [bool],
+}
+
 /// Stacked errors and the largest position and rotation error.
 struct Residual {
     e: DVector<f64>,
@@ -93,12 +124,20 @@ impl Model {
         let mut row = 0;
         for g in goals {
             let at = self.pose_unchecked(q, &g.frame);
+            let base = g
+                .relative_to
+                .map_or_else(Pose::identity, |b| self.pose_unchecked(q, &b));
             let dp = |t: &Vector3<f64>| t - at.translation.vector;
             let dr = |r: &UnitQuaternion<f64>| (r * at.rotation.inverse()).scaled_axis();
             let parts: [Option<Vector3<f64>>; 2] = match &g.target {
-                Target::Pose(p) => [Some(dp(&p.translation.vector)), Some(dr(&p.rotation))],
-                Target::Position(t) => [Some(dp(t)), None],
-                Target::Orientation(r) => [None, Some(dr(r))],
+                Target::Pose(p) => {
+                    let p = base * p;
+                    [Some(dp(&p.translation.vector)), Some(dr(&p.rotation))]
+                }
+                Target::Position(t) => {
+                    [Some(dp(&(base * nalgebra::Point3::from(*t)).coords)), None]
+                }
+                Target::Orientation(r) => [None, Some(dr(&(base.rotation * r)))],
             };
             for (k, part) in parts.iter().enumerate() {
                 if let Some(v) = part {
@@ -119,13 +158,27 @@ impl Model {
         }
     }
 
-    fn jacobian_stack(&self, q: &[f64], goals: &[Goal], m: usize) -> DMatrix<f64> {
+    /// Every goal's Jacobian rows, with coupled columns folded into their
+    /// leaders and the columns of variables that may not move zeroed.
+    fn jacobian_stack(
+        &self,
+        q: &[f64],
+        goals: &[Goal],
+        m: usize,
+        movable: &[bool],
+    ) -> DMatrix<f64> {
         let mut jac = DMatrix::zeros(m, self.dof());
         let mut six = DMatrix::zeros(6, self.dof());
         let mut row = 0;
         for g in goals {
             six.fill(0.0);
-            self.jacobian_into(q, &g.frame, &mut six, 0);
+            let p = self.pose_unchecked(q, &g.frame).translation.vector;
+            self.jacobian_add(q, &g.frame, &p, 1.0, &mut six, 0);
+            if let Some(base) = &g.relative_to {
+                // The target rides on `base`: its velocity at the frame's
+                // point counts against the frame's own.
+                self.jacobian_add(q, base, &p, -1.0, &mut six, 0);
+            }
             let keep = match g.target {
                 Target::Pose(_) => 0..6,
                 Target::Position(_) => 0..3,
@@ -136,12 +189,18 @@ impl Model {
             }
             row += rows(g);
         }
+        self.fold_couplings(&mut jac);
+        for (v, &free) in movable.iter().enumerate() {
+            if !free {
+                jac.column_mut(v).fill(0.0);
+            }
+        }
         jac
     }
 
     /// A starting point for restart `k`: spread over the joint ranges by a
     /// low-discrepancy (Kronecker) sequence, so no two restarts repeat.
-    fn restart_point(&self, k: usize) -> Vec<f64> {
+    fn restart_point(&self, k: usize, seed: &[f64], movable: &[bool]) -> Vec<f64> {
         const STEPS: [f64; 8] = [
             0.414_213_562,
             0.732_050_808,
@@ -156,6 +215,9 @@ impl Model {
             .iter()
             .enumerate()
             .map(|(i, &j)| {
+                if !movable[i] {
+                    return seed[i];
+                }
                 let u = ((k as f64 + 1.0) * STEPS[i % STEPS.len()] + i as f64 * 0.5).fract();
                 let [lo, hi] = self.joints[j]
                     .limits
@@ -176,8 +238,9 @@ impl Model {
         goals: &[Goal],
         m: usize,
         lambda: f64,
+        movable: &[bool],
     ) -> Option<Vec<f64>> {
-        let mut jac = self.jacobian_stack(q, goals, m);
+        let mut jac = self.jacobian_stack(q, goals, m, movable);
         for _ in 0..=self.dof() {
             let jt = jac.transpose();
             let mut a = &jac * &jt;
@@ -199,6 +262,7 @@ impl Model {
             }
             if !pinned {
                 self.clamp(&mut trial);
+                self.apply_couplings(&mut trial);
                 return Some(trial);
             }
         }
@@ -210,13 +274,14 @@ impl Model {
     fn descend(
         &self,
         mut q: Vec<f64>,
-        goals: &[Goal],
-        m: usize,
+        problem: &Problem<'_>,
         options: &Options,
         max_iterations: usize,
         give_up: bool,
     ) -> (Vec<f64>, Residual, usize) {
+        let Problem { goals, m, movable } = *problem;
         self.clamp(&mut q);
+        self.apply_couplings(&mut q);
         let mut r = self.residual(&q, goals, m);
         let mut lambda = 1e-2;
         let mut checkpoint = r.e.norm_squared();
@@ -235,7 +300,7 @@ impl Model {
                 checkpoint = now;
             }
             used += 1;
-            let Some(trial) = self.step(&q, &r, goals, m, lambda) else {
+            let Some(trial) = self.step(&q, &r, goals, m, lambda, movable) else {
                 lambda *= 10.0;
                 continue;
             };
@@ -257,6 +322,8 @@ impl Model {
     /// Solve for joint values that meet every goal, starting from `seed`.
     /// Never fails for reachable or unreachable targets: it returns the best
     /// answer found, with `converged` saying whether it meets the tolerances.
+    /// Couplings hold throughout and closed loops stay closed (their
+    /// constraints join the goals).
     pub fn solve(
         &self,
         goals: &[Goal],
@@ -264,6 +331,50 @@ impl Model {
         options: &Options,
     ) -> Result<Solution, MechanismError> {
         self.check_state(seed)?;
+        for command in &self.commands.0 {
+            if let Some(q) = command.solve(self, goals, seed)
+                && q.len() == self.dof()
+            {
+                let m: usize = goals.iter().map(rows).sum();
+                let r = self.residual(&q, goals, m);
+                if options.done(&r) {
+                    return Ok(Solution {
+                        converged: true,
+                        q,
+                        position_error: r.position,
+                        rotation_error: r.rotation,
+                        iterations: 0,
+                    });
+                }
+            }
+        }
+        self.solve_generic(goals, seed, options)
+    }
+
+    /// [`Model::solve`] without asking the specialised solvers: the
+    /// reference they are checked against.
+    pub fn solve_generic(
+        &self,
+        goals: &[Goal],
+        seed: &[f64],
+        options: &Options,
+    ) -> Result<Solution, MechanismError> {
+        let movable: Vec<bool> = (0..self.dof()).map(|v| !self.is_follower(v)).collect();
+        self.solve_masked(goals, seed, options, &movable)
+    }
+
+    /// [`Model::solve`] moving only the variables marked in `movable`.
+    pub(crate) fn solve_masked(
+        &self,
+        goals: &[Goal],
+        seed: &[f64],
+        options: &Options,
+        movable: &[bool],
+    ) -> Result<Solution, MechanismError> {
+        self.check_state(seed)?;
+        let mut all = goals.to_vec();
+        all.extend(self.loop_goals());
+        let goals = &all[..];
         if goals.is_empty() {
             return Err(MechanismError::new("goals", "give at least one target"));
         }
@@ -283,15 +394,16 @@ impl Model {
             }
         }
         let m: usize = goals.iter().map(rows).sum();
+        let problem = Problem { goals, m, movable };
         let mut best: Option<(Vec<f64>, Residual)> = None;
         let mut iterations = 0;
         for attempt in 0..=options.restarts {
             let start = if attempt == 0 {
                 seed.to_vec()
             } else {
-                self.restart_point(attempt - 1)
+                self.restart_point(attempt - 1, seed, movable)
             };
-            let (q, r, used) = self.descend(start, goals, m, options, options.max_iterations, true);
+            let (q, r, used) = self.descend(start, &problem, options, options.max_iterations, true);
             iterations += used;
             let finished = options.done(&r);
             if best
@@ -309,7 +421,7 @@ impl Model {
         if let Some((q, r)) = best.take() {
             best = Some(if !options.done(&r) && r.e.norm() < 1e-3 {
                 let (q, r, used) =
-                    self.descend(q, goals, m, options, 4 * options.max_iterations, false);
+                    self.descend(q, &problem, options, 4 * options.max_iterations, false);
                 iterations += used;
                 (q, r)
             } else {

@@ -65,21 +65,23 @@ impl Model {
     pub fn jacobian(&self, q: &[f64], frame: &FrameRef) -> Result<DMatrix<f64>, MechanismError> {
         self.check_state(q)?;
         let mut jac = DMatrix::zeros(6, self.dof());
-        self.jacobian_into(q, frame, &mut jac, 0);
+        let p = self.pose_unchecked(q, frame).translation.vector;
+        self.jacobian_add(q, frame, &p, 1.0, &mut jac, 0);
+        self.fold_couplings(&mut jac);
         Ok(jac)
     }
 
-    /// Fill rows `row..row+6` of `jac` with the Jacobian of `frame`.
-    pub(crate) fn jacobian_into(
+    /// Add `sign` times the Jacobian of a point `p` riding on `frame`'s
+    /// body to rows `row..row+6` of `jac` (columns of the joints above it).
+    pub(crate) fn jacobian_add(
         &self,
         q: &[f64],
         frame: &FrameRef,
+        p: &Vector3<f64>,
+        sign: f64,
         jac: &mut DMatrix<f64>,
         row: usize,
     ) {
-        // First the frame's position, then a second walk for the axes
-        // (no scratch list of frames to allocate).
-        let p: Vector3<f64> = self.pose_unchecked(q, frame).translation.vector;
         let mut t = Pose::identity();
         for &j in &self.chains[frame.body] {
             let joint = &self.joints[j];
@@ -94,8 +96,8 @@ impl Model {
                 _ => (z.cross(&(p - at.translation.vector)), z),
             };
             for k in 0..3 {
-                jac[(row + k, v)] = linear[k];
-                jac[(row + 3 + k, v)] = angular[k];
+                jac[(row + k, v)] += sign * linear[k];
+                jac[(row + 3 + k, v)] += sign * angular[k];
             }
         }
     }

@@ -7,11 +7,19 @@
 //! - [`dh`] — standard and modified DH tables turned into that tree;
 //! - [`Model::place`], [`Model::pose`], [`Model::jacobian`] — forward
 //!   kinematics by walking the tree, and the geometric Jacobian;
-//! - [`Model::solve`] — numerical inverse kinematics over several goals;
-//! - [`catalogue`] — built-in arms; [`file`] — model files; [`report`] —
-//!   the JSON the command line prints.
+//! - [`Model::solve`] — numerical inverse kinematics over several goals,
+//!   in the world or relative to another frame; [`special`] — closed-form
+//!   solvers plugged in as commands that the generic one is checked against;
+//! - mounting one model on another (a hexapod from one leg), couplings
+//!   (`q_f = ratio · q_l + offset`) and loop closure (a four-bar);
+//! - [`Model::collisions`] — bounding capsules, coarse to fine, tested in a
+//!   plane on parry2d;
+//! - [`catalogue`] — built-in arms and rigs; [`file`] — model files in DH,
+//!   transforms or zero-position form; [`report`] — the JSON the command
+//!   line and the JS API print.
 
 pub mod catalogue;
+mod compose;
 pub mod dh;
 mod error;
 pub mod file;
@@ -19,9 +27,13 @@ mod ik;
 mod kinematics;
 mod model;
 pub mod report;
+mod shapes;
+pub mod special;
 
+pub use compose::{Closure, Coupling, Group, LoopClosure};
 pub use error::MechanismError;
 pub use ik::{Goal, Options, Solution, Target};
 pub use kinematics::Placement;
 pub use model::{Body, Frame, FrameRef, Joint, JointKind, Model, ModelBuilder, Pose, WORLD};
 pub use nalgebra::{UnitQuaternion, Vector3};
+pub use shapes::{Collisions, Obstacle, Part, Plane, Shape};

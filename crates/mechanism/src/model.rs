@@ -6,7 +6,9 @@
 use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
+use crate::compose::{Coupling, Group, LoopClosure, PendingCoupling, PendingLoop};
 use crate::error::MechanismError;
+use crate::shapes::Shape;
 
 /// A rigid transform: rotation and translation.
 pub type Pose = Isometry3<f64>;
@@ -97,15 +99,32 @@ pub struct Model {
     pub(crate) variable_of: Vec<Option<usize>>,
     /// For each body, the joints from the world down to it, in order.
     pub(crate) chains: Vec<Vec<usize>>,
+    /// Variables that follow others (`q_f = ratio · q_l + offset`).
+    pub(crate) couplings: Vec<Coupling>,
+    /// Loop constraints that close chains, with their passive variables.
+    pub(crate) loops: Vec<LoopClosure>,
+    /// Bounding shapes, several per body allowed.
+    pub(crate) shapes: Vec<Shape>,
+    /// Body pairs never tested against each other (they touch by design).
+    pub(crate) ignored: Vec<(usize, usize)>,
+    /// The mechanism hierarchy: sub-mechanisms and the bodies they own.
+    pub(crate) groups: Vec<Group>,
+    /// Specialised solvers asked before the generic one.
+    pub(crate) commands: crate::special::Commands,
 }
 
 /// Builds a [`Model`] part by part; [`ModelBuilder::build`] checks it.
 #[derive(Debug, Clone, Default)]
 pub struct ModelBuilder {
-    name: String,
-    bodies: Vec<Body>,
-    joints: Vec<Joint>,
-    frames: Vec<Frame>,
+    pub(crate) name: String,
+    pub(crate) bodies: Vec<Body>,
+    pub(crate) joints: Vec<Joint>,
+    pub(crate) frames: Vec<Frame>,
+    pub(crate) couplings: Vec<PendingCoupling>,
+    pub(crate) loops: Vec<PendingLoop>,
+    pub(crate) shapes: Vec<Shape>,
+    pub(crate) ignored: Vec<(usize, usize)>,
+    pub(crate) groups: Vec<Group>,
 }
 
 /// The world frame's name.
@@ -116,8 +135,7 @@ impl ModelBuilder {
         Self {
             name: name.into(),
             bodies: vec![Body { name: WORLD.into() }],
-            joints: Vec::new(),
-            frames: Vec::new(),
+            ..Self::default()
         }
     }
 
@@ -155,6 +173,20 @@ impl ModelBuilder {
             limits,
         });
         child
+    }
+
+    /// The usual first body: `base`, bolted to the world at `base`.
+    pub fn fixed_base(&mut self, base: Pose) -> usize {
+        self.joint(
+            "base",
+            JointKind::Fixed,
+            0,
+            base,
+            Vector3::z_axis(),
+            0.0,
+            Pose::identity(),
+            None,
+        )
     }
 
     /// Add a named frame on `body`.
@@ -277,7 +309,18 @@ impl ModelBuilder {
                 variables.push(i);
             }
         }
-        Ok(Model {
+        for (i, &(a, b)) in self.ignored.iter().enumerate() {
+            if a >= n || b >= n {
+                return Err(MechanismError::new(
+                    format!("ignore[{i}]"),
+                    "names a body that does not exist",
+                ));
+            }
+        }
+        for (i, s) in self.shapes.iter().enumerate() {
+            s.check(&format!("shapes[{i}]"), n)?;
+        }
+        let mut model = Model {
             name: self.name,
             bodies: self.bodies,
             joints,
@@ -285,7 +328,16 @@ impl ModelBuilder {
             variables,
             variable_of,
             chains,
-        })
+            couplings: Vec::new(),
+            loops: Vec::new(),
+            shapes: self.shapes,
+            ignored: self.ignored,
+            groups: self.groups,
+            commands: Default::default(),
+        };
+        model.couplings = crate::compose::resolve_couplings(&model, &self.couplings)?;
+        model.loops = crate::compose::resolve_loops(&model, &self.loops)?;
+        Ok(model)
     }
 }
 
@@ -338,15 +390,25 @@ impl Model {
         ))
     }
 
-    /// Joint values inside every limit, all zero where zero is allowed.
+    /// Joint values inside every limit, all zero where zero is allowed,
+    /// with couplings applied.
     pub fn zero_state(&self) -> Vec<f64> {
-        self.variables
+        let mut q: Vec<f64> = self
+            .variables
             .iter()
             .map(|&j| match self.joints[j].limits {
                 Some([lo, hi]) => 0.0f64.clamp(lo, hi),
                 None => 0.0,
             })
-            .collect()
+            .collect();
+        self.apply_couplings(&mut q);
+        q
+    }
+
+    /// The index of the state variable behind the joint called `name`.
+    pub fn variable(&self, name: &str) -> Option<usize> {
+        let j = self.joints.iter().position(|j| j.name == name)?;
+        self.variable_of[j]
     }
 
     /// Check a state's length and numbers.

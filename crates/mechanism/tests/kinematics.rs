@@ -145,10 +145,7 @@ fn round_trips(id: &str, count: usize) -> Result<(usize, usize), MechanismError>
         let q = random_q(&model, &mut state);
         let target = model.pose(&q, &frame)?;
         let s = model.solve(
-            &[Goal {
-                frame,
-                target: Target::Pose(target),
-            }],
+            &[Goal::new(frame, Target::Pose(target))],
             &seed,
             &Options::default(),
         )?;
@@ -191,10 +188,7 @@ fn unreachable_targets_stop_with_the_closest_pose() -> Result<(), MechanismError
     let frame = tool(&arm);
     let far = nalgebra::Vector3::new(3.0, 0.0, 0.0);
     let s = arm.solve(
-        &[Goal {
-            frame,
-            target: Target::Position(far),
-        }],
+        &[Goal::new(frame, Target::Position(far))],
         &[0.3, 0.3],
         &Options::default(),
     )?;

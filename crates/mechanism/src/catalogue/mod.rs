@@ -1,0 +1,85 @@
+//! Built-in mechanisms: arms described by DH tables, and rigs built from
+//! parts (a rover with a rocker-bogie, a rover carrying an arm, a hexapod
+//! from one leg, a four-bar linkage).
+
+mod arms;
+mod rigs;
+
+use crate::error::MechanismError;
+use crate::model::Model;
+
+pub use arms::puma560_rows;
+
+/// Catalogue entries: id, name, one-line summary.
+pub const CATALOGUE: &[(&str, &str, &str)] = &[
+    (
+        "planar-2r",
+        "Planar 2R arm",
+        "two revolute joints in a plane, links 1 m and 0.8 m",
+    ),
+    (
+        "planar-3r",
+        "Planar 3R arm",
+        "three revolute joints in a plane: position and heading of the hand",
+    ),
+    (
+        "puma560",
+        "Puma 560",
+        "the classic six-joint industrial arm, standard DH, on a 0.6718 m base",
+    ),
+    (
+        "stanford",
+        "Stanford arm",
+        "a six-joint arm with a prismatic third joint, standard DH",
+    ),
+    (
+        "panda",
+        "Franka Panda",
+        "a seven-joint redundant arm described in modified DH",
+    ),
+    (
+        "rocker-bogie",
+        "Rocker-bogie rover",
+        "six wheels on two rockers and two bogies; a differential couples the rockers",
+    ),
+    (
+        "rover-arm",
+        "Rover with an arm",
+        "a mobile manipulator: a rover (x, y, yaw) carrying a three-joint arm",
+    ),
+    (
+        "hexapod",
+        "Hexapod",
+        "one three-joint leg model mounted six times on a body",
+    ),
+    (
+        "four-bar",
+        "Four-bar linkage",
+        "a crank-rocker: a closed chain kept shut by a loop constraint",
+    ),
+];
+
+/// A built-in mechanism by id.
+pub fn mechanism(id: &str) -> Result<Model, MechanismError> {
+    match id {
+        "planar-2r" => arms::planar(&[1.0, 0.8]),
+        "planar-3r" => arms::planar(&[1.0, 0.8, 0.3]),
+        "puma560" => arms::puma560(),
+        "stanford" => arms::stanford(),
+        "panda" => arms::panda(),
+        "rocker-bogie" => rigs::rocker_bogie(),
+        "rover-arm" => rigs::rover_arm(),
+        "hexapod" => rigs::hexapod(),
+        "four-bar" => rigs::four_bar(rigs::FOUR_BAR),
+        other => {
+            let known: Vec<&str> = CATALOGUE.iter().map(|(id, _, _)| *id).collect();
+            Err(MechanismError::new(
+                "model",
+                format!(
+                    "no built-in mechanism `{other}` (known: {})",
+                    known.join(", ")
+                ),
+            ))
+        }
+    }
+}

@@ -1,0 +1,471 @@
+//! Bounding shapes and collision, in 2D on parry2d.
+//!
+//! Every shape is a capsule fixed to a body (a sphere when both ends meet):
+//! the shadow of a 3D capsule on a plane is exactly a 2D capsule of the same
+//! radius, so a query in the plan view (x–y) or the side view (x–z) tests
+//! the shadows. Shapes are arranged coarse to fine as a tree: the whole
+//! mechanism, its sub-mechanisms, each body, each capsule. A query walks
+//! pairs of nodes and descends only where the coarse boxes overlap, then asks
+//! parry2d about the capsules themselves.
+
+use nalgebra::{Point3, Vector3};
+use parry2d_f64::bounding_volume::{Aabb, BoundingVolume};
+use parry2d_f64::math::{Pose as Pose2, Vector as V2};
+use parry2d_f64::query;
+use parry2d_f64::shape::{Ball, Capsule, Cuboid, Shape as ParryShape};
+
+use crate::error::{MechanismError, finite};
+use crate::model::Model;
+
+/// A capsule on a body: the segment `a`–`b` (body frame, m) swollen by
+/// `radius`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shape {
+    pub body: usize,
+    pub a: Vector3<f64>,
+    pub b: Vector3<f64>,
+    pub radius: f64,
+}
+
+impl Shape {
+    pub(crate) fn check(&self, field: &str, bodies: usize) -> Result<(), MechanismError> {
+        if self.body >= bodies {
+            return Err(MechanismError::new(format!("{field}.body"), "no such body"));
+        }
+        for v in self.a.iter().chain(self.b.iter()) {
+            finite(&format!("{field}.a"), *v)?;
+        }
+        if !(self.radius.is_finite() && self.radius > 0.0) {
+            return Err(MechanismError::new(
+                format!("{field}.radius"),
+                format!("must be a positive number of metres, got {}", self.radius),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The plane a query works in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Plane {
+    /// Seen from above: world x and y.
+    Plan,
+    /// Seen from the side: world x and z.
+    Side,
+}
+
+impl Plane {
+    pub fn project(self, p: &Vector3<f64>) -> [f64; 2] {
+        match self {
+            Plane::Plan => [p.x, p.y],
+            Plane::Side => [p.x, p.z],
+        }
+    }
+}
+
+/// A fixed obstacle in the query plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Obstacle {
+    Circle {
+        center: [f64; 2],
+        radius: f64,
+    },
+    /// An axis-aligned box.
+    Rect {
+        center: [f64; 2],
+        half: [f64; 2],
+    },
+}
+
+impl Obstacle {
+    fn check(&self, i: usize) -> Result<(), MechanismError> {
+        let field = format!("obstacles[{i}]");
+        let (numbers, sizes): (Vec<f64>, Vec<f64>) = match self {
+            Obstacle::Circle { center, radius } => (center.to_vec(), vec![*radius]),
+            Obstacle::Rect { center, half } => (center.to_vec(), half.to_vec()),
+        };
+        for v in numbers {
+            finite(&field, v)?;
+        }
+        if sizes.iter().any(|s| !(s.is_finite() && *s > 0.0)) {
+            return Err(MechanismError::new(field, "sizes must be positive"));
+        }
+        Ok(())
+    }
+
+    fn parry(&self) -> (Pose2, Box<dyn ParryShape>) {
+        match *self {
+            Obstacle::Circle { center, radius } => (
+                Pose2::from_translation(V2::new(center[0], center[1])),
+                Box::new(Ball::new(radius)),
+            ),
+            Obstacle::Rect { center, half } => (
+                Pose2::from_translation(V2::new(center[0], center[1])),
+                Box::new(Cuboid::new(V2::new(half[0], half[1]))),
+            ),
+        }
+    }
+}
+
+fn check_all(obstacles: &[Obstacle]) -> Result<(), MechanismError> {
+    for (i, o) in obstacles.iter().enumerate() {
+        o.check(i)?;
+    }
+    Ok(())
+}
+
+/// One side of a colliding pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Part {
+    Body(usize),
+    Obstacle(usize),
+}
+
+/// What a collision query found, and how much work it took.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Collisions {
+    /// Colliding pairs, each once, sorted.
+    pub pairs: Vec<(Part, Part)>,
+    /// Box-against-box tests made on the way down the tree.
+    pub coarse_tests: usize,
+    /// Capsule tests handed to parry2d.
+    pub fine_tests: usize,
+}
+
+/// A node of the bounding tree: a box, and either children or one capsule.
+struct Node {
+    aabb: Aabb,
+    children: Vec<usize>,
+    leaf: Option<(usize, Capsule)>,
+}
+
+/// A capsule in the plane as parry2d sees it (already in world placement).
+fn capsule(bodies: &[crate::Pose], s: &Shape, plane: Plane) -> Capsule {
+    let at = &bodies[s.body];
+    let [ax, ay] = plane.project(&(at * Point3::from(s.a)).coords);
+    let [bx, by] = plane.project(&(at * Point3::from(s.b)).coords);
+    Capsule::new(V2::new(ax, ay), V2::new(bx, by), s.radius)
+}
+
+impl Model {
+    pub fn shapes(&self) -> &[Shape] {
+        &self.shapes
+    }
+
+    /// Body pairs that are never tested: those joined by a joint and those
+    /// the model lists as touching by design.
+    pub fn ignores(&self, a: usize, b: usize) -> bool {
+        let (a, b) = (a.min(b), a.max(b));
+        a == b
+            || self.ignored.contains(&(a, b))
+            || self
+                .joints
+                .iter()
+                .any(|j| (j.parent.min(j.child), j.parent.max(j.child)) == (a, b))
+    }
+
+    /// The bounding tree for state `q` in `plane`, and its root (none
+    /// without shapes).
+    fn bounding_tree(
+        &self,
+        q: &[f64],
+        plane: Plane,
+    ) -> Result<(Vec<Node>, Option<usize>), MechanismError> {
+        let placed = self.place(q)?;
+        let mut nodes: Vec<Node> = Vec::new();
+        // Leaves under body nodes.
+        let mut body_node: Vec<Option<usize>> = vec![None; self.bodies.len()];
+        for (i, s) in self.shapes.iter().enumerate() {
+            let c = capsule(&placed.bodies, s, plane);
+            let aabb = c.compute_aabb(&Pose2::identity());
+            nodes.push(Node {
+                aabb,
+                children: Vec::new(),
+                leaf: Some((i, c)),
+            });
+            let leaf = nodes.len() - 1;
+            match body_node[s.body] {
+                Some(b) => {
+                    let merged = nodes[b].aabb.merged(&aabb);
+                    nodes[b].aabb = merged;
+                    nodes[b].children.push(leaf);
+                }
+                None => {
+                    nodes.push(Node {
+                        aabb,
+                        children: vec![leaf],
+                        leaf: None,
+                    });
+                    body_node[s.body] = Some(nodes.len() - 1);
+                }
+            }
+        }
+        // Each body under its innermost group; groups under their parents.
+        let depth = |g: usize| {
+            let mut d = 0;
+            let mut at = self.groups[g].parent;
+            while let Some(p) = at {
+                d += 1;
+                at = self.groups.get(p).and_then(|g| g.parent);
+                if d > self.groups.len() {
+                    break;
+                }
+            }
+            d
+        };
+        let mut group_node: Vec<Option<usize>> = vec![None; self.groups.len()];
+        let mut root_children = Vec::new();
+        for (b, node) in body_node.iter().enumerate() {
+            let Some(node) = *node else { continue };
+            let owner = (0..self.groups.len())
+                .filter(|&g| self.groups[g].bodies.contains(&b))
+                .max_by_key(|&g| depth(g));
+            match owner {
+                None => root_children.push(node),
+                Some(g) => self.attach(&mut nodes, &mut group_node, &mut root_children, g, node),
+            }
+        }
+        let Some(&first) = root_children.first() else {
+            return Ok((nodes, None));
+        };
+        let mut aabb = nodes[first].aabb;
+        for &c in &root_children {
+            aabb.merge(&nodes[c].aabb);
+        }
+        nodes.push(Node {
+            aabb,
+            children: root_children,
+            leaf: None,
+        });
+        let root = nodes.len() - 1;
+        Ok((nodes, Some(root)))
+    }
+
+    /// Put `child` under group `g`'s node, creating the group's node (and
+    /// its ancestors') on first use; boxes grow on the way up.
+    fn attach(
+        &self,
+        nodes: &mut Vec<Node>,
+        group_node: &mut [Option<usize>],
+        root_children: &mut Vec<usize>,
+        g: usize,
+        child: usize,
+    ) {
+        let aabb = nodes[child].aabb;
+        match group_node[g] {
+            Some(n) => {
+                nodes[n].children.push(child);
+                let mut at = Some(g);
+                while let Some(gi) = at {
+                    if let Some(n) = group_node[gi] {
+                        let merged = nodes[n].aabb.merged(&aabb);
+                        nodes[n].aabb = merged;
+                    }
+                    at = self.groups[gi].parent;
+                }
+            }
+            None => {
+                nodes.push(Node {
+                    aabb,
+                    children: vec![child],
+                    leaf: None,
+                });
+                let n = nodes.len() - 1;
+                group_node[g] = Some(n);
+                match self.groups[g].parent {
+                    Some(p) if p < self.groups.len() && p != g => {
+                        self.attach(nodes, group_node, root_children, p, n)
+                    }
+                    _ => root_children.push(n),
+                }
+            }
+        }
+    }
+
+    /// Self-collisions and collisions with `obstacles` in `plane`, found by
+    /// descending the bounding tree.
+    pub fn collisions(
+        &self,
+        q: &[f64],
+        plane: Plane,
+        obstacles: &[Obstacle],
+    ) -> Result<Collisions, MechanismError> {
+        check_all(obstacles)?;
+        let (nodes, root) = self.bounding_tree(q, plane)?;
+        let mut out = Collisions::default();
+        if let Some(root) = root {
+            self.descend_self(&nodes, root, &mut out);
+            for (i, o) in obstacles.iter().enumerate() {
+                let (pose, shape) = o.parry();
+                let aabb = shape.compute_aabb(&pose);
+                self.descend_obstacle(&nodes, root, i, &pose, shape.as_ref(), &aabb, &mut out);
+            }
+        }
+        out.pairs.sort();
+        out.pairs.dedup();
+        Ok(out)
+    }
+
+    fn descend_self(&self, nodes: &[Node], n: usize, out: &mut Collisions) {
+        let children = &nodes[n].children;
+        for (i, &a) in children.iter().enumerate() {
+            self.descend_self(nodes, a, out);
+            for &b in &children[i + 1..] {
+                self.descend_pair(nodes, a, b, out);
+            }
+        }
+    }
+
+    fn descend_pair(&self, nodes: &[Node], a: usize, b: usize, out: &mut Collisions) {
+        out.coarse_tests += 1;
+        if !nodes[a].aabb.intersects(&nodes[b].aabb) {
+            return;
+        }
+        match (&nodes[a].leaf, &nodes[b].leaf) {
+            (Some((sa, ca)), Some((sb, cb))) => {
+                let (ba, bb) = (self.shapes[*sa].body, self.shapes[*sb].body);
+                if self.ignores(ba, bb) {
+                    return;
+                }
+                out.fine_tests += 1;
+                let id = Pose2::identity();
+                if query::intersection_test(&id, ca, &id, cb).is_ok_and(|r| r.intersecting) {
+                    out.pairs
+                        .push((Part::Body(ba.min(bb)), Part::Body(ba.max(bb))));
+                }
+            }
+            // Split the node that has children (the bigger box first).
+            _ => {
+                let split_a = nodes[b].leaf.is_some()
+                    || (nodes[a].leaf.is_none()
+                        && nodes[a].aabb.volume() >= nodes[b].aabb.volume());
+                if split_a {
+                    for &c in &nodes[a].children {
+                        self.descend_pair(nodes, c, b, out);
+                    }
+                } else {
+                    for &c in &nodes[b].children {
+                        self.descend_pair(nodes, a, c, out);
+                    }
+                }
+            }
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn descend_obstacle(
+        &self,
+        nodes: &[Node],
+        n: usize,
+        obstacle: usize,
+        pose: &Pose2,
+        shape: &dyn ParryShape,
+        aabb: &Aabb,
+        out: &mut Collisions,
+    ) {
+        out.coarse_tests += 1;
+        if !nodes[n].aabb.intersects(aabb) {
+            return;
+        }
+        if let Some((s, c)) = &nodes[n].leaf {
+            out.fine_tests += 1;
+            if query::intersection_test(&Pose2::identity(), c, pose, shape)
+                .is_ok_and(|r| r.intersecting)
+            {
+                out.pairs
+                    .push((Part::Body(self.shapes[*s].body), Part::Obstacle(obstacle)));
+            }
+            return;
+        }
+        for &c in &nodes[n].children {
+            self.descend_obstacle(nodes, c, obstacle, pose, shape, aabb, out);
+        }
+    }
+
+    /// The same answer as [`Model::collisions`] by testing every capsule
+    /// pair: the reference the tree search is checked against.
+    pub fn collisions_brute_force(
+        &self,
+        q: &[f64],
+        plane: Plane,
+        obstacles: &[Obstacle],
+    ) -> Result<Collisions, MechanismError> {
+        check_all(obstacles)?;
+        let placed = self.place(q)?;
+        let caps: Vec<Capsule> = self
+            .shapes
+            .iter()
+            .map(|s| capsule(&placed.bodies, s, plane))
+            .collect();
+        let id = Pose2::identity();
+        let mut out = Collisions::default();
+        for i in 0..caps.len() {
+            let bi = self.shapes[i].body;
+            for j in i + 1..caps.len() {
+                let bj = self.shapes[j].body;
+                if self.ignores(bi, bj) {
+                    continue;
+                }
+                out.fine_tests += 1;
+                if query::intersection_test(&id, &caps[i], &id, &caps[j])
+                    .is_ok_and(|r| r.intersecting)
+                {
+                    out.pairs
+                        .push((Part::Body(bi.min(bj)), Part::Body(bi.max(bj))));
+                }
+            }
+            for (k, o) in obstacles.iter().enumerate() {
+                let (pose, shape) = o.parry();
+                out.fine_tests += 1;
+                if query::intersection_test(&id, &caps[i], &pose, shape.as_ref())
+                    .is_ok_and(|r| r.intersecting)
+                {
+                    out.pairs.push((Part::Body(bi), Part::Obstacle(k)));
+                }
+            }
+        }
+        out.pairs.sort();
+        out.pairs.dedup();
+        Ok(out)
+    }
+
+    /// The smallest gap between any two bodies that may collide, and
+    /// between bodies and obstacles (0 when something touches).
+    pub fn clearance(
+        &self,
+        q: &[f64],
+        plane: Plane,
+        obstacles: &[Obstacle],
+    ) -> Result<Option<(f64, Part, Part)>, MechanismError> {
+        check_all(obstacles)?;
+        let placed = self.place(q)?;
+        let caps: Vec<(usize, Capsule)> = self
+            .shapes
+            .iter()
+            .map(|s| (s.body, capsule(&placed.bodies, s, plane)))
+            .collect();
+        let id = Pose2::identity();
+        let mut best: Option<(f64, Part, Part)> = None;
+        let mut offer = |d: f64, a: Part, b: Part| {
+            if best.is_none_or(|(bd, _, _)| d < bd) {
+                best = Some((d, a, b));
+            }
+        };
+        for (i, (bi, ci)) in caps.iter().enumerate() {
+            for (bj, cj) in &caps[i + 1..] {
+                if !self.ignores(*bi, *bj)
+                    && let Ok(d) = query::distance(&id, ci, &id, cj)
+                {
+                    offer(d.distance, Part::Body(*bi.min(bj)), Part::Body(*bi.max(bj)));
+                }
+            }
+            for (k, o) in obstacles.iter().enumerate() {
+                let (pose, shape) = o.parry();
+                if let Ok(d) = query::distance(&id, ci, &pose, shape.as_ref()) {
+                    offer(d.distance, Part::Body(*bi), Part::Obstacle(k));
+                }
+            }
+        }
+        Ok(best)
+    }
+}
