@@ -53,6 +53,14 @@ for (const name of names) {
 }
 await benchServer.close();
 
+// The reference implementation's kernels run natively only.
+for (const name of (await readdir(criterionDir)).filter((n) => n.startsWith("k_")).sort()) {
+  try {
+    const est = JSON.parse(await readFile(join(criterionDir, name, "new", "estimates.json"), "utf8"));
+    rows.push({ name, nativeNs: est.median.point_estimate, wasmNs: NaN, ratio: NaN });
+  } catch { /* not run */ }
+}
+
 // Size of the lab's wasm and time to first frame (median of 5 cold loads).
 const wasmFile = (await readdir(dist)).find((f) => f.endsWith(".wasm") && f.startsWith("kinolab-lab"));
 const wasmBytes = await readFile(join(dist, wasmFile));
@@ -72,7 +80,23 @@ await browser.close();
 const lines = [];
 lines.push("| kernel | native (criterion median) | wasm in Chromium (median) | wasm / native |");
 lines.push("|---|---:|---:|---:|");
-for (const r of rows) lines.push(`| ${r.name} | ${fmt(r.nativeNs)} | ${fmt(r.wasmNs)} | ${r.ratio.toFixed(2)}× |`);
+for (const r of rows) {
+  const ratio = Number.isFinite(r.ratio) ? `${r.ratio.toFixed(2)}×` : "—";
+  const wasm = Number.isFinite(r.wasmNs) ? fmt(r.wasmNs) : "— (native only)";
+  lines.push(`| ${r.name} | ${fmt(r.nativeNs)} | ${wasm} | ${ratio} |`);
+}
+// Kinolab against the reference, same inputs.
+const byName = Object.fromEntries(rows.map((r) => [r.name, r]));
+for (const [ours, theirs] of [["mech_fk_puma_tool", "k_fk_puma_tool"], ["mech_ik_puma_100_targets", "k_ik_puma_100_targets"]]) {
+  if (byName[ours] && byName[theirs]) {
+    lines.push("");
+    lines.push(`${ours} / ${theirs}: ${(byName[ours].nativeNs / byName[theirs].nativeNs).toFixed(2)}× (native medians)`);
+  }
+}
+try {
+  lines.push("");
+  lines.push((await readFile("target/ik-survey.md", "utf8")).trimEnd());
+} catch { /* no survey */ }
 lines.push("");
 lines.push(`lab wasm: ${(wasmBytes.length / 1e6).toFixed(2)} MB raw, ${(gzipSync(wasmBytes, { level: 9 }).length / 1e6).toFixed(2)} MB gzipped`);
 lines.push(`first frame after navigation: median ${median(firstFrames).toFixed(0)} ms of 5 cold loads (${firstFrames.map((x) => x.toFixed(0)).join(", ")} ms)`);

@@ -6,7 +6,7 @@
 // fails on any console error, page error or panic text.
 import { mkdir } from "node:fs/promises";
 import assert from "node:assert/strict";
-import { serve, launch, waitForLab } from "./serve.mjs";
+import { serve, launch, waitForLab, waitForPage } from "./serve.mjs";
 
 const [dist = "dist", out = "target/e2e"] = process.argv.slice(2);
 await mkdir(out, { recursive: true });
@@ -66,7 +66,7 @@ try {
   await check("a wheel layout shared in a link is kept in the address", async () => {
     const layout = "f,90,0,0.25,0.1;f,-90,180,0.25,0.1;w,0,0,0.3,0.05,g=0";
     await page.goto(`${server.url}#/wheeled-locomotion/wheel-kinds?w0=${layout}`);
-    assert.equal(await waitForLab(page), "wheeled-locomotion/wheel-kinds");
+    await waitForPage(page, "wheeled-locomotion/wheel-kinds");
     await page.waitForTimeout(500);
     assert.ok((await page.evaluate(() => location.hash)).includes(`w0=${layout}`));
     await page.reload();
@@ -113,6 +113,13 @@ try {
     assert.match(await embed.textContent("#drive-out"), /^Gains strongly stable; reached the goal in 5\.8\d s over \d\.\d\d m$/);
     await embed.fill("#gains", "3, 2, -1.5");
     assert.match(await embed.textContent("#drive-out"), /^Gains unstable; not reached: \d+\.\d cm and \d+° off after 10 s$/);
+    assert.equal(await embed.textContent("#fk-out"), "Puma 560: tool at (0.399, -0.150, 1.311) m");
+    assert.match(await embed.textContent("#ik-out"), /^Reached: q = \(/);
+    await embed.fill("#reach", "3, 0, 0.7");
+    assert.match(await embed.textContent("#ik-out"), /^Out of reach: \d+\.\d cm short$/);
+    await embed.selectOption("#mechanism", "planar-2r");
+    assert.equal(await embed.inputValue("#joints"), "0.00, 0.00");
+    assert.equal(await embed.textContent("#fk-out"), "Planar 2R arm: tool at (1.800, 0.000, 0.000) m");
     await embed.screenshot({ path: `${out}/embed.png`, fullPage: true });
   });
 

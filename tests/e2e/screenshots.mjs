@@ -1,5 +1,5 @@
 // Screenshots of every page for a visual review (not a test).
-// usage: node tests/e2e/screenshots.mjs DIST_DIR OUT_DIR [HEIGHT] [light|dark] [WIDTH]
+// usage: [ONLY=unit/] node tests/e2e/screenshots.mjs DIST_DIR OUT_DIR [HEIGHT] [light|dark] [WIDTH]
 import { mkdir } from "node:fs/promises";
 import { serve, launch, waitForLab } from "./serve.mjs";
 
@@ -16,7 +16,9 @@ const pages = await page.evaluate(async () => {
   const { lessons } = await import("./pkg/kinolab_js.js").then(async (m) => { await m.default(); return m; });
   return lessons().map((l) => l.address);
 });
-for (const address of ["", ...pages]) {
+// ONLY=<prefix> limits the run to the pages whose address starts with it.
+const only = process.env.ONLY;
+for (const address of ["", ...pages].filter((a) => !only || a.startsWith(only))) {
   await page.goto(`${server.url}#/${address}`);
   await page.waitForFunction((a) => document.documentElement.dataset.kinolabPage === a, address);
   await page.waitForTimeout(400);

@@ -52,6 +52,17 @@ export async function launch() {
 }
 
 /** Wait until the lab has drawn its first frame; returns the page it shows. */
+/// Wait until the lab shows the page at `address` (after a jump that only
+/// changes the hash, the old page is still "ready" for a moment).
+export async function waitForPage(page, address, timeout = 90_000) {
+  await page.waitForFunction(
+    (a) => document.documentElement.dataset.kinolabReady === "1" && document.documentElement.dataset.kinolabPage === a,
+    address,
+    { timeout },
+  );
+  return address;
+}
+
 export async function waitForLab(page, timeout = 90_000) {
   await page.waitForFunction(() => document.documentElement.dataset.kinolabReady === "1", null, { timeout });
   return page.evaluate(() => document.documentElement.dataset.kinolabPage);

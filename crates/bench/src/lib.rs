@@ -8,6 +8,10 @@
 
 use std::hint::black_box;
 
+pub mod mechanism;
+#[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
+pub mod reference;
+
 /// A named unit of work.
 #[derive(Debug, Clone, Copy)]
 pub struct Kernel {
@@ -172,6 +176,39 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "control_batch_100_starts",
         run: control_batch,
+    },
+    Kernel {
+        name: "mech_fk_puma_tool",
+        run: mechanism::fk_puma,
+    },
+    Kernel {
+        name: "mech_fk_rover_all_frames",
+        run: mechanism::fk_rover_all,
+    },
+    Kernel {
+        name: "mech_jacobian_puma",
+        run: mechanism::jacobian_puma,
+    },
+    Kernel {
+        name: "mech_ik_puma_100_targets",
+        run: mechanism::ik_puma_100,
+    },
+    Kernel {
+        name: "mech_ik_panda_100_targets",
+        run: mechanism::ik_panda_100,
+    },
+];
+
+/// The reference implementation's kernels (native only).
+#[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
+pub const REFERENCE_KERNELS: &[Kernel] = &[
+    Kernel {
+        name: "k_fk_puma_tool",
+        run: reference::k_fk_puma,
+    },
+    Kernel {
+        name: "k_ik_puma_100_targets",
+        run: reference::k_ik_puma_100,
     },
 ];
 

@@ -125,3 +125,29 @@ pub fn chain_builder(
     b.frame("tool", parent, tool);
     Ok(b)
 }
+
+/// One DH link as a transform: from frame i−1 to frame i for the row
+/// (a, α, d, θ), all fixed numbers.
+pub fn link(convention: Convention, a: f64, alpha: f64, d: f64, theta: f64) -> Pose {
+    let [p1, p2, p3, p4] = steps(convention, a, alpha, d, theta);
+    p1 * p2 * p3 * p4
+}
+
+/// The four elementary motions of a DH link in the order they apply:
+/// standard `Rz(θ) Tz(d) Tx(a) Rx(α)`, modified `Rx(α) Tx(a) Rz(θ) Tz(d)`.
+pub fn steps(convention: Convention, a: f64, alpha: f64, d: f64, theta: f64) -> [Pose; 4] {
+    match convention {
+        Convention::StandardDh => [
+            rot_z(theta),
+            shift(0.0, 0.0, d),
+            shift(a, 0.0, 0.0),
+            rot_x(alpha),
+        ],
+        Convention::ModifiedDh => [
+            rot_x(alpha),
+            shift(a, 0.0, 0.0),
+            rot_z(theta),
+            shift(0.0, 0.0, d),
+        ],
+    }
+}

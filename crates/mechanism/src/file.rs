@@ -85,6 +85,8 @@ struct JointFile {
     axis: Option<[f64; 3]>,
     /// Zero position: a point on the axis, in the world.
     point: Option<[f64; 3]>,
+    /// Transforms: a fixed transform after the joint's motion.
+    after: Option<PoseFile>,
     // All.
     /// Revolute: θ = q + offset.
     offset_deg: Option<f64>,
@@ -398,11 +400,14 @@ fn unit_axis(field: &str, v: [f64; 3]) -> Result<Unit<Vector3<f64>>, MechanismEr
 fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
     let zero_position = file.convention == Description::ZeroPosition;
     let mut b = ModelBuilder::new(file.name.clone());
-    let base_body = b.fixed_base(base);
+    // A `base` body only when the file places one.
+    let mut previous = match file.base {
+        Some(_) => b.fixed_base(base),
+        None => 0,
+    };
     // Zero position: where each body's frame sits, relative to the base,
     // with every joint at zero (its joint's point, axes as the base's).
-    let mut home: Vec<Vector3<f64>> = vec![Vector3::zeros(); 2];
-    let mut previous = base_body;
+    let mut home: Vec<Vector3<f64>> = vec![Vector3::zeros(); b.bodies.len()];
     for (i, j) in file.joints.iter().enumerate() {
         let field = |f: &str| format!("joints[{i}].{f}");
         let dh_fields = [
@@ -418,7 +423,11 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
         let axis = unit_axis(&field("axis"), j.axis.unwrap_or([0.0, 0.0, 1.0]))?;
         let origin = if zero_position {
             unused(i, &dh_fields, "zero-position")?;
-            unused(i, &[("origin", j.origin.is_some())], "zero-position")?;
+            unused(
+                i,
+                &[("origin", j.origin.is_some()), ("after", j.after.is_some())],
+                "zero-position",
+            )?;
             let point = match j.point {
                 Some(p) => {
                     for v in p {
@@ -436,6 +445,10 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
             unused(i, &[("point", j.point.is_some())], "transforms")?;
             j.origin.unwrap_or_default().pose(&field("origin"))?
         };
+        let after = match &j.after {
+            Some(a) => a.pose(&field("after"))?,
+            None => Pose::identity(),
+        };
         previous = b.joint(
             j.name.clone(),
             j.kind,
@@ -443,7 +456,7 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
             origin,
             axis,
             offset(j),
-            Pose::identity(),
+            after,
             limits(i, j)?,
         );
     }
@@ -461,8 +474,85 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
             }
         }
     };
-    b.frame("tool", previous, tool);
+    if !file.frames.iter().any(|f| f.name == "tool") {
+        b.frame("tool", previous, tool);
+    }
     Ok(b)
+}
+
+fn pose_json(p: &Pose) -> serde_json::Value {
+    let (r, pi, y) = p.rotation.euler_angles();
+    let t = p.translation.vector;
+    serde_json::json!({ "xyz": [t.x, t.y, t.z], "rpy_deg": [r.to_degrees(), pi.to_degrees(), y.to_degrees()] })
+}
+
+/// A model as a file in the transforms description: every joint with its
+/// parent, origin, axis and the transform after its motion, with frames,
+/// couplings, loops, shapes and ignored pairs. Mounted sub-mechanisms are
+/// written out flat (their names keep the mount prefix).
+pub fn to_json(model: &Model) -> String {
+    use serde_json::json;
+    let body = |b: usize| {
+        model
+            .bodies()
+            .get(b)
+            .map_or(String::new(), |x| x.name.clone())
+    };
+    let joints: Vec<serde_json::Value> = model
+        .joints()
+        .iter()
+        .map(|j| {
+            let mut v = json!({
+                "name": j.name,
+                "type": j.kind,
+                "parent": body(j.parent),
+                "origin": pose_json(&j.origin),
+                "axis": [j.axis.x, j.axis.y, j.axis.z],
+            });
+            if j.post != Pose::identity() {
+                v["after"] = pose_json(&j.post);
+            }
+            let prismatic = j.kind == JointKind::Prismatic;
+            if j.offset != 0.0 {
+                if prismatic {
+                    v["offset"] = json!(j.offset);
+                } else {
+                    v["offset_deg"] = json!(j.offset.to_degrees());
+                }
+            }
+            if let Some([lo, hi]) = j.limits {
+                if prismatic {
+                    v["limits"] = json!([lo, hi]);
+                } else {
+                    v["limits_deg"] = json!([lo.to_degrees(), hi.to_degrees()]);
+                }
+            }
+            v
+        })
+        .collect();
+    let frame_name = |f: &crate::FrameRef| -> String {
+        model
+            .frames()
+            .iter()
+            .find(|x| x.body == f.body && x.offset == f.offset)
+            .map_or_else(|| body(f.body), |x| x.name.clone())
+    };
+    let variable = |v: usize| {
+        model
+            .variable_joint(v)
+            .map_or(String::new(), |j| j.name.clone())
+    };
+    let file = json!({
+        "name": model.name(),
+        "convention": "transforms",
+        "joints": joints,
+        "frames": model.frames().iter().map(|f| json!({ "name": f.name, "body": body(f.body), "at": pose_json(&f.offset) })).collect::<Vec<_>>(),
+        "couplings": model.couplings().iter().map(|c| json!({ "follower": variable(c.follower), "leader": variable(c.leader), "ratio": c.ratio, "offset": c.offset })).collect::<Vec<_>>(),
+        "loops": model.loops().iter().map(|l| json!({ "name": l.name, "a": frame_name(&l.a), "b": frame_name(&l.b), "whole_pose": l.whole_pose, "passive": l.passive.iter().map(|&v| variable(v)).collect::<Vec<_>>() })).collect::<Vec<_>>(),
+        "shapes": model.shapes().iter().map(|s| json!({ "body": body(s.body), "a": [s.a.x, s.a.y, s.a.z], "b": [s.b.x, s.b.y, s.b.z], "radius": s.radius })).collect::<Vec<_>>(),
+        "ignore": model.ignored_pairs().iter().map(|&(a, b)| json!([body(a), body(b)])).collect::<Vec<_>>(),
+    });
+    serde_json::to_string_pretty(&file).unwrap_or_default()
 }
 
 #[cfg(test)]

@@ -82,23 +82,44 @@ impl Model {
         jac: &mut DMatrix<f64>,
         row: usize,
     ) {
+        let mut axes = Vec::new();
+        self.walk_axes(q, frame, &mut axes);
+        if row == 0 && jac.nrows() == 6 {
+            crate::ik::add_columns(&axes, p, sign, jac);
+        } else {
+            let mut six = DMatrix::zeros(6, jac.ncols());
+            crate::ik::add_columns(&axes, p, sign, &mut six);
+            for r in 0..6 {
+                for c in 0..jac.ncols() {
+                    jac[(row + r, c)] += six[(r, c)];
+                }
+            }
+        }
+    }
+
+    /// Walk down to `frame`, noting the world axis of every moving joint on
+    /// the way; returns the frame's pose.
+    pub(crate) fn walk_axes(
+        &self,
+        q: &[f64],
+        frame: &FrameRef,
+        out: &mut Vec<crate::ik::Axis>,
+    ) -> Pose {
+        out.clear();
         let mut t = Pose::identity();
         for &j in &self.chains[frame.body] {
             let joint = &self.joints[j];
             let at = t * joint.origin;
-            t = at * joint.motion(self.value(q, j)) * joint.post;
-            let Some(v) = self.variable_of[j] else {
-                continue;
-            };
-            let z = at.rotation * joint.axis.into_inner();
-            let (linear, angular) = match joint.kind {
-                crate::JointKind::Prismatic => (z, Vector3::zeros()),
-                _ => (z.cross(&(p - at.translation.vector)), z),
-            };
-            for k in 0..3 {
-                jac[(row + k, v)] += sign * linear[k];
-                jac[(row + 3 + k, v)] += sign * angular[k];
+            if let Some(v) = self.variable_of[j] {
+                out.push(crate::ik::Axis {
+                    v,
+                    prismatic: joint.kind == crate::JointKind::Prismatic,
+                    z: at.rotation * joint.axis.into_inner(),
+                    o: at.translation.vector,
+                });
             }
+            t = at * joint.motion(self.value(q, j)) * joint.post;
         }
+        t * frame.offset
     }
 }

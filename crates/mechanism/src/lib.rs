@@ -22,6 +22,7 @@ pub mod catalogue;
 mod compose;
 pub mod dh;
 mod error;
+pub mod exercise;
 pub mod file;
 mod ik;
 mod kinematics;

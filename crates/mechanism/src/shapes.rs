@@ -152,6 +152,11 @@ impl Model {
         &self.shapes
     }
 
+    /// The body pairs the model lists as never colliding.
+    pub fn ignored_pairs(&self) -> &[(usize, usize)] {
+        &self.ignored
+    }
+
     /// Body pairs that are never tested: those joined by a joint and those
     /// the model lists as touching by design.
     pub fn ignores(&self, a: usize, b: usize) -> bool {

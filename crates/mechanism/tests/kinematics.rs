@@ -144,11 +144,12 @@ fn round_trips(id: &str, count: usize) -> Result<(usize, usize), MechanismError>
     for _ in 0..count {
         let q = random_q(&model, &mut state);
         let target = model.pose(&q, &frame)?;
-        let s = model.solve(
-            &[Goal::new(frame, Target::Pose(target))],
-            &seed,
-            &Options::default(),
-        )?;
+        let options = Options {
+            position_tolerance: 1e-6,
+            rotation_tolerance: 1e-6,
+            ..Options::default()
+        };
+        let s = model.solve(&[Goal::new(frame, Target::Pose(target))], &seed, &options)?;
         let reached = model.pose(&s.q, &frame)?;
         let inside = s.q.iter().enumerate().all(|(i, v)| {
             model
@@ -165,16 +166,16 @@ fn round_trips(id: &str, count: usize) -> Result<(usize, usize), MechanismError>
     Ok((ok, count))
 }
 
-/// Random poses within the limits, solved from the zero pose. The issue
-/// asks for 99.9 % on the Puma and the Panda; the bars below are what the
-/// solver reaches today (99.65 % and 99.5 % measured), so a regression
-/// fails. Targets close to the elbow singularity are the misses.
+/// Random poses within the limits, solved from the zero pose to 1e-6 m
+/// and 1e-6 rad: at least 99.9 % must converge (10 000 each for the Puma
+/// and the Panda, as the issue asks). The few misses lie next to the elbow
+/// singularity, where the steps shrink slowly.
 #[test]
 fn ik_round_trips_converge() -> Result<(), MechanismError> {
     for (id, n, bar) in [
-        ("puma560", 2000, 0.995),
-        ("panda", 1000, 0.99),
-        ("stanford", 500, 0.999),
+        ("puma560", 10_000, 0.999),
+        ("panda", 10_000, 0.999),
+        ("stanford", 1000, 0.999),
     ] {
         let (ok, count) = round_trips(id, n)?;
         assert!(ok as f64 >= bar * count as f64, "{id}: {ok} of {count}");
@@ -203,6 +204,19 @@ fn unreachable_targets_stop_with_the_closest_pose() -> Result<(), MechanismError
     let o = Options::default();
     // Every attempt, plus one longer polish of the best.
     assert!(s.iterations <= o.max_iterations * (o.restarts + 5));
+    // A six-joint arm asked for a pose twice its reach gives up as fast:
+    // attempts that stop improving end after a few iterations each.
+    let puma = mechanism("puma560")?;
+    let s = puma.solve(
+        &[Goal::new(
+            tool(&puma),
+            Target::Pose(Pose::translation(2.0, 0.0, 0.7)),
+        )],
+        &puma.zero_state(),
+        &o,
+    )?;
+    assert!(!s.converged && s.position_error > 1.0);
+    assert!(s.iterations < 20 * (o.restarts + 1), "{}", s.iterations);
     Ok(())
 }
 

@@ -130,7 +130,16 @@ fn chromedriver() -> String {
 pub fn bench(args: &[String]) -> Result {
     ensure(Needs { browser: true })?;
     let quick = args.iter().any(|a| a == "--quick");
-    let mut criterion = cargo(&["bench", "-p", "kinolab-bench", "--bench", "kernels", "--"]);
+    let mut criterion = cargo(&[
+        "bench",
+        "-p",
+        "kinolab-bench",
+        "--features",
+        "compare-k",
+        "--bench",
+        "kernels",
+        "--",
+    ]);
     if quick {
         criterion.args(["--warm-up-time", "0.5", "--measurement-time", "1"]);
     }

@@ -1094,14 +1094,7 @@ mod tests {
     use super::*;
 
     fn spec(params: &[(&str, &str)]) -> WidgetSpec {
-        WidgetSpec {
-            name: "controller-playground".into(),
-            params: params
-                .iter()
-                .map(|(k, v)| (k.to_string(), v.to_string()))
-                .collect(),
-            line: 1,
-        }
+        super::super::test_spec("controller-playground", params)
     }
 
     #[test]

@@ -8,8 +8,11 @@ mod chassis_view;
 mod controller_field;
 mod controller_params;
 mod controller_playground;
+mod dh_link;
 mod frame_rotation;
 mod leg_events;
+mod mechanism_viewer;
+mod scene3d;
 mod scripted_vs_sensing;
 mod speed_profile;
 mod support_polygon;
@@ -76,6 +79,16 @@ pub const REGISTRY: &[(&str, Constructor, &str)] = &[
         controller_playground::create,
         "the polar go-to-pose controller: runs, many starts, open vs closed loop, the gain region",
     ),
+    (
+        "mechanism-viewer",
+        mechanism_viewer::create,
+        "a mechanism in 3D or plan/side view: joint sliders, drag-to-IK, frames, bounding shapes, model tree",
+    ),
+    (
+        "dh-link",
+        dh_link::create,
+        "one DH link built motion by motion, with its matrix; match a target frame",
+    ),
 ];
 
 /// Make the widget a lesson block names, or say why not.
@@ -114,6 +127,36 @@ pub(crate) fn number_param(
     }
 }
 
+/// A yes/no parameter, or `default` when absent.
+pub(crate) fn yes_no_param(spec: &WidgetSpec, key: &str, default: bool) -> Result<bool, String> {
+    match spec.param(key) {
+        None => Ok(default),
+        Some("yes") => Ok(true),
+        Some("no") => Ok(false),
+        Some(other) => Err(format!(
+            "Parameter `{key}` must be yes or no, found `{other}`."
+        )),
+    }
+}
+
+/// Comma-separated numbers, or an error naming the parameter.
+pub(crate) fn number_list(key: &str, text: &str) -> Result<Vec<f64>, String> {
+    text.split(',')
+        .map(|t| {
+            t.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| {
+                    format!(
+                        "Parameter `{key}` needs numbers separated by commas, found `{}`.",
+                        t.trim()
+                    )
+                })
+        })
+        .collect()
+}
+
 /// Reject parameters the widget does not know, so typos are visible.
 pub(crate) fn known_params(spec: &WidgetSpec, known: &[&str]) -> Result<(), String> {
     for (key, _) in &spec.params {
@@ -126,6 +169,19 @@ pub(crate) fn known_params(spec: &WidgetSpec, known: &[&str]) -> Result<(), Stri
         }
     }
     Ok(())
+}
+
+/// A widget block as a lesson would write it, for tests.
+#[cfg(test)]
+pub(crate) fn test_spec(name: &str, params: &[(&str, &str)]) -> WidgetSpec {
+    WidgetSpec {
+        name: name.into(),
+        params: params
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect(),
+        line: 1,
+    }
 }
 
 /// A value for display: rounding noise smaller than `resolution` becomes 0,

@@ -1,0 +1,136 @@
+//! Mechanism kernels: forward kinematics, the Jacobian and inverse
+//! kinematics on fixed, seeded inputs; plus the IK success survey.
+
+use std::hint::black_box;
+use std::sync::OnceLock;
+
+use kinolab_mechanism::catalogue::mechanism;
+use kinolab_mechanism::{FrameRef, Goal, Model, Options, Pose, Target};
+
+/// A model and its tool frame.
+#[derive(Debug)]
+pub struct Arm {
+    pub model: Model,
+    pub tool: FrameRef,
+}
+
+fn arm(id: &str) -> Option<Arm> {
+    let model = mechanism(id).ok()?;
+    let tool = model.frame("tool").ok()?;
+    Some(Arm { model, tool })
+}
+
+pub fn puma() -> Option<&'static Arm> {
+    static PUMA: OnceLock<Option<Arm>> = OnceLock::new();
+    PUMA.get_or_init(|| arm("puma560")).as_ref()
+}
+
+pub fn panda() -> Option<&'static Arm> {
+    static PANDA: OnceLock<Option<Arm>> = OnceLock::new();
+    PANDA.get_or_init(|| arm("panda")).as_ref()
+}
+
+/// A joint configuration used by the FK and Jacobian kernels.
+pub const PUMA_Q: [f64; 6] = [0.3, -0.5, 0.8, 0.2, 0.6, -0.4];
+
+/// Seeded random configurations inside the joint limits.
+pub fn random_states(model: &Model, count: usize, seed: u64) -> Vec<Vec<f64>> {
+    let mut s = seed;
+    let mut next = move || {
+        s = s
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..count)
+        .map(|_| {
+            (0..model.dof())
+                .map(|i| {
+                    let [lo, hi] = model
+                        .variable_joint(i)
+                        .and_then(|j| j.limits)
+                        .unwrap_or([-std::f64::consts::PI, std::f64::consts::PI]);
+                    lo + next() * (hi - lo)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Reachable targets: the tool's pose at random configurations.
+pub fn targets(arm: &Arm, count: usize, seed: u64) -> Vec<Pose> {
+    random_states(&arm.model, count, seed)
+        .iter()
+        .filter_map(|q| arm.model.pose(q, &arm.tool).ok())
+        .collect()
+}
+
+/// Tolerances of the issue: 1e-6 m and 1e-6 rad.
+pub fn ik_options() -> Options {
+    Options {
+        position_tolerance: 1e-6,
+        rotation_tolerance: 1e-6,
+        ..Options::default()
+    }
+}
+
+/// Solve each target from the zero pose; returns how many converged.
+pub fn solve_all(arm: &Arm, targets: &[Pose]) -> usize {
+    let seed = arm.model.zero_state();
+    let options = ik_options();
+    targets
+        .iter()
+        .filter(|t| {
+            arm.model
+                .solve(&[Goal::new(arm.tool, Target::Pose(**t))], &seed, &options)
+                .is_ok_and(|s| s.converged)
+        })
+        .count()
+}
+
+fn ik_targets(which: &'static OnceLock<Vec<Pose>>, arm: Option<&'static Arm>) -> &'static [Pose] {
+    which.get_or_init(|| arm.map(|a| targets(a, 100, 17)).unwrap_or_default())
+}
+
+/// FK of the Puma's tool frame.
+pub fn fk_puma() -> f64 {
+    puma()
+        .and_then(|a| a.model.pose(black_box(&PUMA_Q), &a.tool).ok())
+        .map_or(f64::NAN, |p| p.translation.vector.x + 1.0)
+}
+
+/// All-frames FK of the rocker-bogie rover.
+pub fn fk_rover_all() -> f64 {
+    static ROVER: OnceLock<Option<Model>> = OnceLock::new();
+    let Some(rover) = ROVER
+        .get_or_init(|| mechanism("rocker-bogie").ok())
+        .as_ref()
+    else {
+        return f64::NAN;
+    };
+    let q = [0.1, -0.1, 0.2, -0.15];
+    rover.place(black_box(&q)).map_or(f64::NAN, |p| {
+        p.bodies.iter().map(|b| b.translation.vector.z).sum()
+    })
+}
+
+/// The Puma tool's geometric Jacobian.
+pub fn jacobian_puma() -> f64 {
+    puma()
+        .and_then(|a| a.model.jacobian(black_box(&PUMA_Q), &a.tool).ok())
+        .map_or(f64::NAN, |j| j.norm())
+}
+
+/// IK of 100 seeded reachable Puma targets from the zero pose.
+pub fn ik_puma_100() -> f64 {
+    static T: OnceLock<Vec<Pose>> = OnceLock::new();
+    let targets = ik_targets(&T, puma());
+    puma().map_or(f64::NAN, |a| solve_all(a, black_box(targets)) as f64)
+}
+
+/// IK of 100 seeded reachable Panda targets from the zero pose.
+pub fn ik_panda_100() -> f64 {
+    static T: OnceLock<Vec<Pose>> = OnceLock::new();
+    let targets = ik_targets(&T, panda());
+    panda().map_or(f64::NAN, |a| solve_all(a, black_box(targets)) as f64)
+}
