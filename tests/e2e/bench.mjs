@@ -87,7 +87,7 @@ for (const r of rows) {
 }
 // Kinolab against the reference, same inputs.
 const byName = Object.fromEntries(rows.map((r) => [r.name, r]));
-for (const [ours, theirs] of [["mech_fk_puma_tool", "k_fk_puma_tool"], ["mech_ik_puma_100_targets", "k_ik_puma_100_targets"]]) {
+for (const [ours, theirs] of [["mech_fk_puma_tool", "k_fk_puma_tool"], ["mech_ik_puma_100_bent_start", "k_ik_puma_100_targets"]]) {
   if (byName[ours] && byName[theirs]) {
     lines.push("");
     lines.push(`${ours} / ${theirs}: ${(byName[ours].nativeNs / byName[theirs].nativeNs).toFixed(2)}× (native medians)`);

@@ -34,7 +34,7 @@ fn survey(name: &str, arm: &Arm, solve: impl Fn(&[kinolab_mechanism::Pose]) -> u
 
 fn main() {
     let mut lines = vec![
-        "| IK survey (from the zero pose, 1e-6 m / 1e-6 rad) | targets | converged | mean time |"
+        "| IK survey (from the zero pose unless noted; 1e-6 m / 1e-6 rad) | targets | converged | mean time |"
             .to_string(),
         "|---|---:|---:|---:|".to_string(),
     ];
@@ -45,10 +45,16 @@ fn main() {
         if let Some(chain) =
             kinolab_bench::reference::chain_of(&puma.model, &kinolab_mechanism::Pose::identity())
         {
+            use kinolab_bench::reference::{K_SEED, solve_all_k};
             lines.push(survey(
-                "k 0.32, Puma 560 (Jacobian solver, 100 steps)",
+                "Kinolab, Puma 560, from k's start pose",
                 puma,
-                |t| kinolab_bench::reference::solve_all_k(&chain, t),
+                |t| kinolab_bench::mechanism::solve_all_from(puma, t, &K_SEED),
+            ));
+            lines.push(survey(
+                "k 0.32, Puma 560, from the same start (Jacobian solver, 100 steps)",
+                puma,
+                |t| solve_all_k(&chain, t),
             ));
         }
     }

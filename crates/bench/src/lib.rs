@@ -194,6 +194,10 @@ pub const KERNELS: &[Kernel] = &[
         run: mechanism::ik_puma_100,
     },
     Kernel {
+        name: "mech_ik_puma_100_bent_start",
+        run: mechanism::ik_puma_100_bent,
+    },
+    Kernel {
         name: "mech_ik_panda_100_targets",
         run: mechanism::ik_panda_100,
     },

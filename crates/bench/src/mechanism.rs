@@ -76,13 +76,17 @@ pub fn ik_options() -> Options {
 
 /// Solve each target from the zero pose; returns how many converged.
 pub fn solve_all(arm: &Arm, targets: &[Pose]) -> usize {
-    let seed = arm.model.zero_state();
+    solve_all_from(arm, targets, &arm.model.zero_state())
+}
+
+/// Solve each target from `seed`; returns how many converged.
+pub fn solve_all_from(arm: &Arm, targets: &[Pose], seed: &[f64]) -> usize {
     let options = ik_options();
     targets
         .iter()
         .filter(|t| {
             arm.model
-                .solve(&[Goal::new(arm.tool, Target::Pose(**t))], &seed, &options)
+                .solve(&[Goal::new(arm.tool, Target::Pose(**t))], seed, &options)
                 .is_ok_and(|s| s.converged)
         })
         .count()
@@ -126,6 +130,19 @@ pub fn ik_puma_100() -> f64 {
     static T: OnceLock<Vec<Pose>> = OnceLock::new();
     let targets = ik_targets(&T, puma());
     puma().map_or(f64::NAN, |a| solve_all(a, black_box(targets)) as f64)
+}
+
+/// The start pose of the comparison with the `k` crate, whose solver
+/// cannot start from the Puma's singular zero pose.
+pub const BENT_START: [f64; 6] = [0.0, -0.6, 0.9, 0.0, 0.6, 0.0];
+
+/// IK of the same 100 Puma targets from [`BENT_START`].
+pub fn ik_puma_100_bent() -> f64 {
+    static T: OnceLock<Vec<Pose>> = OnceLock::new();
+    let targets = ik_targets(&T, puma());
+    puma().map_or(f64::NAN, |a| {
+        solve_all_from(a, black_box(targets), &BENT_START) as f64
+    })
 }
 
 /// IK of 100 seeded reachable Panda targets from the zero pose.

@@ -74,8 +74,8 @@ pub fn k_fk_puma() -> f64 {
     })
 }
 
-/// `k`'s Jacobian IK on the same 100 Puma targets, from the zero pose,
-/// at the same tolerance and 100 iterations; returns how many converged.
+/// `k`'s Jacobian IK on the same 100 Puma targets, from [`K_SEED`], at the
+/// same tolerance and 100 iterations; returns how many converged.
 pub fn k_ik_puma_100() -> f64 {
     static T: OnceLock<Vec<Pose>> = OnceLock::new();
     let targets = T.get_or_init(|| puma().map(|a| targets(a, 100, 17)).unwrap_or_default());
@@ -86,12 +86,17 @@ pub fn k_ik_puma_100() -> f64 {
     })
 }
 
+/// Where `k` starts: its Jacobian solver inverts the Jacobian without
+/// damping, so it cannot start from the Puma's zero pose (the wrist is
+/// singular there, q5 = 0); this bent pose is regular.
+pub const K_SEED: [f64; 6] = crate::mechanism::BENT_START;
+
 pub fn solve_all_k(chain: &k::SerialChain<f64>, targets: &[Pose]) -> usize {
     let solver = k::JacobianIkSolver::new(1e-6, 1e-6, 0.5, 100);
     targets
         .iter()
         .filter(|t| {
-            chain.set_joint_positions_unchecked(&[0.0; 6]);
+            chain.set_joint_positions_unchecked(&K_SEED);
             solver.solve(chain, &iso(t)).is_ok()
         })
         .count()

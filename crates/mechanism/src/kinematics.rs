@@ -26,15 +26,56 @@ impl Model {
         let mut bodies = vec![Pose::identity(); self.bodies.len()];
         let mut joints = Vec::with_capacity(self.joints.len());
         for (i, j) in self.joints.iter().enumerate() {
-            let at = bodies[j.parent] * j.origin;
-            bodies[j.child] = at * j.motion(self.value(q, i)) * j.post;
-            joints.push(at);
+            let mut t = bodies[j.parent];
+            self.enter(&mut t, i);
+            joints.push(t);
+            self.cross(&mut t, i, q);
+            bodies[j.child] = t;
         }
         Ok(Placement { bodies, joints })
     }
 
-    /// One frame in the world, walking only the joints above it.
+    /// Move `t` from joint `j`'s parent frame onto the joint's axis.
+    #[inline]
+    fn enter(&self, t: &mut Pose, j: usize) {
+        if !self.plain[j][0] {
+            *t *= self.joints[j].origin;
+        }
+    }
+
+    /// Move `t` from joint `j`'s axis through its motion for state `q` to
+    /// the child body's frame. A turn only changes the rotation and a slide
+    /// only the translation, so neither needs a full product.
+    #[inline]
+    fn cross(&self, t: &mut Pose, j: usize, q: &[f64]) {
+        let joint = &self.joints[j];
+        let v = self.value(q, j) + joint.offset;
+        match joint.kind {
+            crate::JointKind::Revolute | crate::JointKind::Continuous => {
+                t.rotation *= nalgebra::UnitQuaternion::from_axis_angle(&joint.axis, v);
+            }
+            crate::JointKind::Prismatic => {
+                t.translation.vector += t.rotation * (joint.axis.into_inner() * v);
+            }
+            crate::JointKind::Fixed => {}
+        }
+        if !self.plain[j][1] {
+            *t *= joint.post;
+        }
+    }
+
+    /// One frame in the world, walking only the joints above it (or from
+    /// a plugged-in closed form, when one knows this frame).
     pub fn pose(&self, q: &[f64], frame: &FrameRef) -> Result<Pose, MechanismError> {
+        self.check_state(q)?;
+        Ok(self
+            .pose_by_command(q, frame)
+            .unwrap_or_else(|| self.pose_unchecked(q, frame)))
+    }
+
+    /// [`Model::pose`] by walking the tree, never by a plugged-in command:
+    /// the reference the closed forms are checked against.
+    pub fn pose_generic(&self, q: &[f64], frame: &FrameRef) -> Result<Pose, MechanismError> {
         self.check_state(q)?;
         Ok(self.pose_unchecked(q, frame))
     }
@@ -43,10 +84,14 @@ impl Model {
     pub(crate) fn pose_unchecked(&self, q: &[f64], frame: &FrameRef) -> Pose {
         let mut t = Pose::identity();
         for &j in &self.chains[frame.body] {
-            let joint = &self.joints[j];
-            t = t * joint.origin * joint.motion(self.value(q, j)) * joint.post;
+            self.enter(&mut t, j);
+            self.cross(&mut t, j, q);
         }
-        t * frame.offset
+        if frame.offset == Pose::identity() {
+            t
+        } else {
+            t * frame.offset
+        }
     }
 
     /// The pose of `to` seen from `from`: from⁻¹ · to.
@@ -109,17 +154,21 @@ impl Model {
         let mut t = Pose::identity();
         for &j in &self.chains[frame.body] {
             let joint = &self.joints[j];
-            let at = t * joint.origin;
+            self.enter(&mut t, j);
             if let Some(v) = self.variable_of[j] {
                 out.push(crate::ik::Axis {
                     v,
                     prismatic: joint.kind == crate::JointKind::Prismatic,
-                    z: at.rotation * joint.axis.into_inner(),
-                    o: at.translation.vector,
+                    z: t.rotation * joint.axis.into_inner(),
+                    o: t.translation.vector,
                 });
             }
-            t = at * joint.motion(self.value(q, j)) * joint.post;
+            self.cross(&mut t, j, q);
         }
-        t * frame.offset
+        if frame.offset == Pose::identity() {
+            t
+        } else {
+            t * frame.offset
+        }
     }
 }

@@ -99,6 +99,9 @@ pub struct Model {
     pub(crate) variable_of: Vec<Option<usize>>,
     /// For each body, the joints from the world down to it, in order.
     pub(crate) chains: Vec<Vec<usize>>,
+    /// For each joint, whether its origin and its post transform are the
+    /// identity (DH joints have one of the two), so walks can skip them.
+    pub(crate) plain: Vec<[bool; 2]>,
     /// Variables that follow others (`q_f = ratio · q_l + offset`).
     pub(crate) couplings: Vec<Coupling>,
     /// Loop constraints that close chains, with their passive variables.
@@ -328,6 +331,7 @@ impl ModelBuilder {
             variables,
             variable_of,
             chains,
+            plain: Vec::new(),
             couplings: Vec::new(),
             loops: Vec::new(),
             shapes: self.shapes,
@@ -335,6 +339,11 @@ impl ModelBuilder {
             groups: self.groups,
             commands: Default::default(),
         };
+        model.plain = model
+            .joints
+            .iter()
+            .map(|j| [j.origin == Pose::identity(), j.post == Pose::identity()])
+            .collect();
         model.couplings = crate::compose::resolve_couplings(&model, &self.couplings)?;
         model.loops = crate::compose::resolve_loops(&model, &self.loops)?;
         Ok(model)
@@ -424,8 +433,9 @@ impl Model {
                 ),
             ));
         }
-        for (i, v) in q.iter().enumerate() {
-            crate::error::finite(&format!("q[{i}]"), *v)?;
+        // The field name is only written out when something is wrong.
+        if let Some(i) = q.iter().position(|v| !v.is_finite()) {
+            crate::error::finite(&format!("q[{i}]"), q[i])?;
         }
         Ok(())
     }

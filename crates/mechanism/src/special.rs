@@ -1,17 +1,18 @@
 //! Specialised solvers, plugged into a model as commands.
 //!
-//! The generic solver works for any mechanism; some mechanisms have a
-//! closed-form answer that is exact and far cheaper. A command is asked
-//! first: it solves the goals it recognises and declines the rest, which
-//! then go to the generic solver. Each command is checked against the
-//! generic solver in the tests.
+//! The generic algorithms work for any mechanism; some mechanisms have a
+//! closed-form answer that is exact and cheaper. A command is asked first:
+//! it answers what it recognises and declines the rest, which then goes to
+//! the generic algorithm. Inverse commands solve goals, forward commands
+//! place frames. Each command is checked against the generic algorithm in
+//! the tests.
 
 use std::f64::consts::PI;
 use std::fmt;
 use std::sync::Arc;
 
 use crate::ik::{Goal, Target};
-use crate::model::{FrameRef, Model};
+use crate::model::{FrameRef, Model, Pose};
 
 /// A closed-form inverse-kinematics algorithm for one kind of mechanism.
 pub trait InverseCommand: Send + Sync {
@@ -24,38 +25,96 @@ pub trait InverseCommand: Send + Sync {
     fn solve(&self, model: &Model, goals: &[Goal], seed: &[f64]) -> Option<Vec<f64>>;
 }
 
-/// The commands a model carries.
+/// A closed-form forward kinematics for a frame of one kind of mechanism.
+pub trait ForwardCommand: Send + Sync {
+    /// A short name shown to learners ("closed-form planar FK").
+    fn name(&self) -> &str;
+
+    /// The frame's pose for joint values `q`; `None` when it is not this
+    /// command's frame.
+    fn pose(&self, q: &[f64], frame: &FrameRef) -> Option<Pose>;
+}
+
+/// The commands a model carries: inverse ones, then forward ones.
 #[derive(Clone, Default)]
-pub struct Commands(pub(crate) Vec<Arc<dyn InverseCommand>>);
+pub struct Commands(
+    pub(crate) Vec<Arc<dyn InverseCommand>>,
+    pub(crate) Vec<Arc<dyn ForwardCommand>>,
+);
+
+impl Commands {
+    fn names(&self) -> Vec<&str> {
+        self.1
+            .iter()
+            .map(|c| c.name())
+            .chain(self.0.iter().map(|c| c.name()))
+            .collect()
+    }
+}
 
 impl fmt::Debug for Commands {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_list()
-            .entries(self.0.iter().map(|c| c.name()))
-            .finish()
+        f.debug_list().entries(self.names()).finish()
     }
 }
 
 impl PartialEq for Commands {
     fn eq(&self, other: &Self) -> bool {
-        self.0.len() == other.0.len()
-            && self
-                .0
-                .iter()
-                .zip(&other.0)
-                .all(|(a, b)| a.name() == b.name())
+        self.names() == other.names()
     }
 }
 
 impl Model {
-    /// Plug in a specialised solver; later ones are asked first.
+    /// Plug in a specialised inverse-kinematics solver; later ones are
+    /// asked first.
     pub fn add_command(&mut self, command: Arc<dyn InverseCommand>) {
         self.commands.0.insert(0, command);
     }
 
-    /// The names of the plugged-in solvers.
+    /// Plug in a closed-form forward kinematics; later ones are asked first.
+    pub fn add_forward_command(&mut self, command: Arc<dyn ForwardCommand>) {
+        self.commands.1.insert(0, command);
+    }
+
+    /// The names of the plugged-in commands, forward ones first.
     pub fn command_names(&self) -> Vec<&str> {
-        self.commands.0.iter().map(|c| c.name()).collect()
+        self.commands.names()
+    }
+
+    /// A frame's pose from a plugged-in closed form, if one knows it.
+    pub(crate) fn pose_by_command(&self, q: &[f64], frame: &FrameRef) -> Option<Pose> {
+        self.commands.1.iter().find_map(|c| c.pose(q, frame))
+    }
+}
+
+/// Closed-form forward kinematics of a planar arm's tool: turn by the sum
+/// of the joint angles, reach by the sum of the link vectors.
+#[derive(Debug, Clone)]
+pub struct PlanarForward {
+    pub links: Vec<f64>,
+    pub tool: FrameRef,
+}
+
+impl ForwardCommand for PlanarForward {
+    fn name(&self) -> &str {
+        "closed-form planar FK"
+    }
+
+    fn pose(&self, q: &[f64], frame: &FrameRef) -> Option<Pose> {
+        if *frame != self.tool || q.len() != self.links.len() {
+            return None;
+        }
+        let (mut x, mut y, mut angle) = (0.0, 0.0, 0.0);
+        for (l, qi) in self.links.iter().zip(q) {
+            angle += qi;
+            let (s, c) = angle.sin_cos();
+            x += l * c;
+            y += l * s;
+        }
+        Some(Pose::from_parts(
+            nalgebra::Translation3::new(x, y, 0.0),
+            nalgebra::UnitQuaternion::from_axis_angle(&nalgebra::Vector3::z_axis(), angle),
+        ))
     }
 }
 
@@ -187,4 +246,8 @@ pub(crate) fn attach_planar(model: &mut Model, links: &[f64]) {
         })),
         _ => {}
     }
+    model.add_forward_command(Arc::new(PlanarForward {
+        links: links.to_vec(),
+        tool,
+    }));
 }

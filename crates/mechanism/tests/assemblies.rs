@@ -195,8 +195,31 @@ fn a_goal_relative_to_a_moving_frame() -> Result<(), MechanismError> {
 fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), MechanismError> {
     let two = mechanism("planar-2r")?;
     let three = mechanism("planar-3r")?;
-    assert_eq!(two.command_names(), ["analytic 2R"]);
-    assert_eq!(three.command_names(), ["analytic 3R"]);
+    assert_eq!(
+        two.command_names(),
+        ["closed-form planar FK", "analytic 2R"]
+    );
+    assert_eq!(
+        three.command_names(),
+        ["closed-form planar FK", "analytic 3R"]
+    );
+    // The closed-form FK against the tree walk, over random states.
+    let mut s = 11_u64;
+    for _ in 0..200 {
+        let q: Vec<f64> = (0..3)
+            .map(|_| {
+                s = s.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+                ((s >> 11) as f64 / (1u64 << 53) as f64) * 2.0 * PI - PI
+            })
+            .collect();
+        for (arm, q) in [(&two, &q[..2]), (&three, &q[..])] {
+            let f = frame(arm, "tool");
+            let a = arm.pose(q, &f)?;
+            let b = arm.pose_generic(q, &f)?;
+            assert!((a.translation.vector - b.translation.vector).norm() < 1e-12);
+            assert!(a.rotation.angle_to(&b.rotation) < 1e-12);
+        }
+    }
     let mut state = 7_u64;
     let mut next = || {
         state = state

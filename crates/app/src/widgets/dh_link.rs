@@ -166,8 +166,10 @@ impl LabWidget for DhLink {
             painter.line_segment([p0, p1], Stroke::new(1.5, text.gamma_multiply(0.5)));
             if k < 3 {
                 draw_frame(&painter, &self.camera, rect, &at, 0.12, 0.35, 1.0);
+                // Staggered: a motion that only turns leaves the origin
+                // where it was, and the labels would overlap.
                 painter.text(
-                    p1 + vec2(4.0, -4.0),
+                    p1 + vec2(4.0, -4.0 - 14.0 * k as f32),
                     egui::Align2::LEFT_BOTTOM,
                     format!("after {}", names[k]),
                     font.clone(),

@@ -545,18 +545,18 @@ impl Viewer {
                 );
             }
         }
-        if self.shapes {
-            for s in self.model.shapes() {
-                let at = &placed.bodies[s.body];
-                let a = at.rotation * s.a + at.translation.vector;
-                let b = at.rotation * s.b + at.translation.vector;
-                let fill = if hit(s.body) {
-                    warn.gamma_multiply(0.45)
-                } else {
-                    accent.gamma_multiply(0.18)
-                };
-                draw_capsule(&painter, &self.camera, rect, &a, &b, s.radius, fill);
-            }
+        // Bodies as their capsules: faint as silhouettes, stronger when the
+        // learner asks for the bounding shapes (colliding ones in red).
+        for s in self.model.shapes() {
+            let at = &placed.bodies[s.body];
+            let a = at.rotation * s.a + at.translation.vector;
+            let b = at.rotation * s.b + at.translation.vector;
+            let fill = match (self.shapes, hit(s.body)) {
+                (true, true) => warn.gamma_multiply(0.45),
+                (true, false) => accent.gamma_multiply(0.22),
+                (false, _) => text.gamma_multiply(0.14),
+            };
+            draw_capsule(&painter, &self.camera, rect, &a, &b, s.radius, fill);
         }
         // The skeleton: parent origin → joint → child origin.
         for (j, joint) in self.model.joints().iter().enumerate() {
@@ -974,10 +974,13 @@ fn bounds(model: &Model, q: &[f64], flat: bool) -> ([f64; 3], f64) {
     }
     let centre = (lo + hi) / 2.0;
     let half = (hi - lo).max() / 2.0;
-    (
-        [centre.x, centre.y, centre.z],
-        (half * 1.25).max(reach * 0.45).max(0.1),
-    )
+    // A closed chain never stretches out: its box is a better guide.
+    let extent = if closed {
+        half * 1.6
+    } else {
+        (half * 1.25).max(reach * 0.45)
+    };
+    ([centre.x, centre.y, centre.z], extent.max(0.1))
 }
 
 impl LabWidget for Viewer {
