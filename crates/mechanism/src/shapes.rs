@@ -435,8 +435,109 @@ impl Model {
     }
 
     /// The smallest gap between any two bodies that may collide, and
-    /// between bodies and obstacles (0 when something touches).
+    /// between bodies and obstacles (0 when something touches). Walks the
+    /// bounding tree like [`Model::collisions`], skipping every pair of
+    /// boxes already further apart than the best gap found so far.
     pub fn clearance(
+        &self,
+        q: &[f64],
+        plane: Plane,
+        obstacles: &[Obstacle],
+    ) -> Result<Option<(f64, Part, Part)>, MechanismError> {
+        check_all(obstacles)?;
+        let (nodes, root) = self.bounding_tree(q, plane)?;
+        let mut best: Option<(f64, Part, Part)> = None;
+        if let Some(root) = root {
+            self.gap_self(&nodes, root, &mut best);
+            for (i, o) in obstacles.iter().enumerate() {
+                let (pose, shape) = o.parry();
+                let aabb = shape.compute_aabb(&pose);
+                self.gap_obstacle(&nodes, root, i, &pose, shape.as_ref(), &aabb, &mut best);
+            }
+        }
+        Ok(best)
+    }
+
+    fn gap_self(&self, nodes: &[Node], n: usize, best: &mut Option<(f64, Part, Part)>) {
+        let children = &nodes[n].children;
+        for (i, &a) in children.iter().enumerate() {
+            self.gap_self(nodes, a, best);
+            for &b in &children[i + 1..] {
+                self.gap_pair(nodes, a, b, best);
+            }
+        }
+    }
+
+    fn gap_pair(&self, nodes: &[Node], a: usize, b: usize, best: &mut Option<(f64, Part, Part)>) {
+        if best.is_some_and(|(d, _, _)| box_gap(&nodes[a].aabb, &nodes[b].aabb) >= d) {
+            return;
+        }
+        match (&nodes[a].leaf, &nodes[b].leaf) {
+            (Some((sa, ca)), Some((sb, cb))) => {
+                let (ba, bb) = (self.shapes[*sa].body, self.shapes[*sb].body);
+                if self.ignores(ba, bb) {
+                    return;
+                }
+                let id = Pose2::identity();
+                if let Ok(d) = query::distance(&id, ca, &id, cb) {
+                    offer(
+                        best,
+                        d.distance,
+                        Part::Body(ba.min(bb)),
+                        Part::Body(ba.max(bb)),
+                    );
+                }
+            }
+            _ => {
+                let split_a = nodes[b].leaf.is_some()
+                    || (nodes[a].leaf.is_none()
+                        && nodes[a].aabb.volume() >= nodes[b].aabb.volume());
+                if split_a {
+                    for &c in &nodes[a].children {
+                        self.gap_pair(nodes, c, b, best);
+                    }
+                } else {
+                    for &c in &nodes[b].children {
+                        self.gap_pair(nodes, a, c, best);
+                    }
+                }
+            }
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn gap_obstacle(
+        &self,
+        nodes: &[Node],
+        n: usize,
+        obstacle: usize,
+        pose: &Pose2,
+        shape: &dyn ParryShape,
+        aabb: &Aabb,
+        best: &mut Option<(f64, Part, Part)>,
+    ) {
+        if best.is_some_and(|(d, _, _)| box_gap(&nodes[n].aabb, aabb) >= d) {
+            return;
+        }
+        if let Some((s, c)) = &nodes[n].leaf {
+            if let Ok(d) = query::distance(&Pose2::identity(), c, pose, shape) {
+                offer(
+                    best,
+                    d.distance,
+                    Part::Body(self.shapes[*s].body),
+                    Part::Obstacle(obstacle),
+                );
+            }
+            return;
+        }
+        for &c in &nodes[n].children {
+            self.gap_obstacle(nodes, c, obstacle, pose, shape, aabb, best);
+        }
+    }
+
+    /// [`Model::clearance`] over every capsule pair: the reference the
+    /// tree walk is checked against.
+    pub fn clearance_brute_force(
         &self,
         q: &[f64],
         plane: Plane,
@@ -451,26 +552,41 @@ impl Model {
             .collect();
         let id = Pose2::identity();
         let mut best: Option<(f64, Part, Part)> = None;
-        let mut offer = |d: f64, a: Part, b: Part| {
-            if best.is_none_or(|(bd, _, _)| d < bd) {
-                best = Some((d, a, b));
-            }
-        };
         for (i, (bi, ci)) in caps.iter().enumerate() {
             for (bj, cj) in &caps[i + 1..] {
                 if !self.ignores(*bi, *bj)
                     && let Ok(d) = query::distance(&id, ci, &id, cj)
                 {
-                    offer(d.distance, Part::Body(*bi.min(bj)), Part::Body(*bi.max(bj)));
+                    offer(
+                        &mut best,
+                        d.distance,
+                        Part::Body(*bi.min(bj)),
+                        Part::Body(*bi.max(bj)),
+                    );
                 }
             }
             for (k, o) in obstacles.iter().enumerate() {
                 let (pose, shape) = o.parry();
                 if let Ok(d) = query::distance(&id, ci, &pose, shape.as_ref()) {
-                    offer(d.distance, Part::Body(*bi), Part::Obstacle(k));
+                    offer(&mut best, d.distance, Part::Body(*bi), Part::Obstacle(k));
                 }
             }
         }
         Ok(best)
     }
+}
+
+/// Keep the smaller gap.
+fn offer(best: &mut Option<(f64, Part, Part)>, d: f64, a: Part, b: Part) {
+    if best.is_none_or(|(bd, _, _)| d < bd) {
+        *best = Some((d, a, b));
+    }
+}
+
+/// The distance between two boxes (0 when they overlap): a lower bound on
+/// the distance between anything inside them.
+fn box_gap(a: &Aabb, b: &Aabb) -> f64 {
+    let dx = (a.mins.x - b.maxs.x).max(b.mins.x - a.maxs.x).max(0.0);
+    let dy = (a.mins.y - b.maxs.y).max(b.mins.y - a.maxs.y).max(0.0);
+    dx.hypot(dy)
 }

@@ -382,6 +382,13 @@ proptest! {
         let slow = m.collisions_brute_force(&q, plane, &obstacles).unwrap_or_else(|e| panic!("{e}"));
         prop_assert_eq!(&fast.pairs, &slow.pairs, "{} {:?}", id, q);
         prop_assert!(fast.fine_tests <= slow.fine_tests);
+        // The pruned clearance finds the same smallest gap.
+        let near = m.clearance(&q, plane, &obstacles).unwrap_or_else(|e| panic!("{e}"));
+        let all = m.clearance_brute_force(&q, plane, &obstacles).unwrap_or_else(|e| panic!("{e}"));
+        prop_assert_eq!(near.is_some(), all.is_some());
+        if let (Some((a, _, _)), Some((b, _, _))) = (near, all) {
+            prop_assert!((a - b).abs() < 1e-12, "{} vs {}", a, b);
+        }
     }
 }
 
