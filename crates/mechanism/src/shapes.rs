@@ -295,96 +295,9 @@ impl Model {
         plane: Plane,
         obstacles: &[Obstacle],
     ) -> Result<Collisions, MechanismError> {
-        check_all(obstacles)?;
-        let (nodes, root) = self.bounding_tree(q, plane)?;
-        let mut out = Collisions::default();
-        if let Some(root) = root {
-            self.descend_self(&nodes, root, &mut out);
-            for (i, o) in obstacles.iter().enumerate() {
-                let (pose, shape) = o.parry();
-                let aabb = shape.compute_aabb(&pose);
-                self.descend_obstacle(&nodes, root, i, &pose, shape.as_ref(), &aabb, &mut out);
-            }
-        }
-        out.pairs.sort();
-        out.pairs.dedup();
-        Ok(out)
-    }
-
-    fn descend_self(&self, nodes: &[Node], n: usize, out: &mut Collisions) {
-        let children = &nodes[n].children;
-        for (i, &a) in children.iter().enumerate() {
-            self.descend_self(nodes, a, out);
-            for &b in &children[i + 1..] {
-                self.descend_pair(nodes, a, b, out);
-            }
-        }
-    }
-
-    fn descend_pair(&self, nodes: &[Node], a: usize, b: usize, out: &mut Collisions) {
-        out.coarse_tests += 1;
-        if !nodes[a].aabb.intersects(&nodes[b].aabb) {
-            return;
-        }
-        match (&nodes[a].leaf, &nodes[b].leaf) {
-            (Some((sa, ca)), Some((sb, cb))) => {
-                let (ba, bb) = (self.shapes[*sa].body, self.shapes[*sb].body);
-                if self.ignores(ba, bb) {
-                    return;
-                }
-                out.fine_tests += 1;
-                let id = Pose2::identity();
-                if query::intersection_test(&id, ca, &id, cb).is_ok_and(|r| r.intersecting) {
-                    out.pairs
-                        .push((Part::Body(ba.min(bb)), Part::Body(ba.max(bb))));
-                }
-            }
-            // Split the node that has children (the bigger box first).
-            _ => {
-                let split_a = nodes[b].leaf.is_some()
-                    || (nodes[a].leaf.is_none()
-                        && nodes[a].aabb.volume() >= nodes[b].aabb.volume());
-                if split_a {
-                    for &c in &nodes[a].children {
-                        self.descend_pair(nodes, c, b, out);
-                    }
-                } else {
-                    for &c in &nodes[b].children {
-                        self.descend_pair(nodes, a, c, out);
-                    }
-                }
-            }
-        }
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn descend_obstacle(
-        &self,
-        nodes: &[Node],
-        n: usize,
-        obstacle: usize,
-        pose: &Pose2,
-        shape: &dyn ParryShape,
-        aabb: &Aabb,
-        out: &mut Collisions,
-    ) {
-        out.coarse_tests += 1;
-        if !nodes[n].aabb.intersects(aabb) {
-            return;
-        }
-        if let Some((s, c)) = &nodes[n].leaf {
-            out.fine_tests += 1;
-            if query::intersection_test(&Pose2::identity(), c, pose, shape)
-                .is_ok_and(|r| r.intersecting)
-            {
-                out.pairs
-                    .push((Part::Body(self.shapes[*s].body), Part::Obstacle(obstacle)));
-            }
-            return;
-        }
-        for &c in &nodes[n].children {
-            self.descend_obstacle(nodes, c, obstacle, pose, shape, aabb, out);
-        }
+        let mut visit = Collide::default();
+        self.walk_tree(q, plane, obstacles, &mut visit)?;
+        Ok(visit.finish())
     }
 
     /// The same answer as [`Model::collisions`] by testing every capsule
@@ -395,43 +308,9 @@ impl Model {
         plane: Plane,
         obstacles: &[Obstacle],
     ) -> Result<Collisions, MechanismError> {
-        check_all(obstacles)?;
-        let placed = self.place(q)?;
-        let caps: Vec<Capsule> = self
-            .shapes
-            .iter()
-            .map(|s| capsule(&placed.bodies, s, plane))
-            .collect();
-        let id = Pose2::identity();
-        let mut out = Collisions::default();
-        for i in 0..caps.len() {
-            let bi = self.shapes[i].body;
-            for j in i + 1..caps.len() {
-                let bj = self.shapes[j].body;
-                if self.ignores(bi, bj) {
-                    continue;
-                }
-                out.fine_tests += 1;
-                if query::intersection_test(&id, &caps[i], &id, &caps[j])
-                    .is_ok_and(|r| r.intersecting)
-                {
-                    out.pairs
-                        .push((Part::Body(bi.min(bj)), Part::Body(bi.max(bj))));
-                }
-            }
-            for (k, o) in obstacles.iter().enumerate() {
-                let (pose, shape) = o.parry();
-                out.fine_tests += 1;
-                if query::intersection_test(&id, &caps[i], &pose, shape.as_ref())
-                    .is_ok_and(|r| r.intersecting)
-                {
-                    out.pairs.push((Part::Body(bi), Part::Obstacle(k)));
-                }
-            }
-        }
-        out.pairs.sort();
-        out.pairs.dedup();
-        Ok(out)
+        let mut visit = Collide::default();
+        self.walk_all(q, plane, obstacles, &mut visit)?;
+        Ok(visit.finish())
     }
 
     /// The smallest gap between any two bodies that may collide, and
@@ -444,95 +323,9 @@ impl Model {
         plane: Plane,
         obstacles: &[Obstacle],
     ) -> Result<Option<(f64, Part, Part)>, MechanismError> {
-        check_all(obstacles)?;
-        let (nodes, root) = self.bounding_tree(q, plane)?;
-        let mut best: Option<(f64, Part, Part)> = None;
-        if let Some(root) = root {
-            self.gap_self(&nodes, root, &mut best);
-            for (i, o) in obstacles.iter().enumerate() {
-                let (pose, shape) = o.parry();
-                let aabb = shape.compute_aabb(&pose);
-                self.gap_obstacle(&nodes, root, i, &pose, shape.as_ref(), &aabb, &mut best);
-            }
-        }
-        Ok(best)
-    }
-
-    fn gap_self(&self, nodes: &[Node], n: usize, best: &mut Option<(f64, Part, Part)>) {
-        let children = &nodes[n].children;
-        for (i, &a) in children.iter().enumerate() {
-            self.gap_self(nodes, a, best);
-            for &b in &children[i + 1..] {
-                self.gap_pair(nodes, a, b, best);
-            }
-        }
-    }
-
-    fn gap_pair(&self, nodes: &[Node], a: usize, b: usize, best: &mut Option<(f64, Part, Part)>) {
-        if best.is_some_and(|(d, _, _)| box_gap(&nodes[a].aabb, &nodes[b].aabb) >= d) {
-            return;
-        }
-        match (&nodes[a].leaf, &nodes[b].leaf) {
-            (Some((sa, ca)), Some((sb, cb))) => {
-                let (ba, bb) = (self.shapes[*sa].body, self.shapes[*sb].body);
-                if self.ignores(ba, bb) {
-                    return;
-                }
-                let id = Pose2::identity();
-                if let Ok(d) = query::distance(&id, ca, &id, cb) {
-                    offer(
-                        best,
-                        d.distance,
-                        Part::Body(ba.min(bb)),
-                        Part::Body(ba.max(bb)),
-                    );
-                }
-            }
-            _ => {
-                let split_a = nodes[b].leaf.is_some()
-                    || (nodes[a].leaf.is_none()
-                        && nodes[a].aabb.volume() >= nodes[b].aabb.volume());
-                if split_a {
-                    for &c in &nodes[a].children {
-                        self.gap_pair(nodes, c, b, best);
-                    }
-                } else {
-                    for &c in &nodes[b].children {
-                        self.gap_pair(nodes, a, c, best);
-                    }
-                }
-            }
-        }
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn gap_obstacle(
-        &self,
-        nodes: &[Node],
-        n: usize,
-        obstacle: usize,
-        pose: &Pose2,
-        shape: &dyn ParryShape,
-        aabb: &Aabb,
-        best: &mut Option<(f64, Part, Part)>,
-    ) {
-        if best.is_some_and(|(d, _, _)| box_gap(&nodes[n].aabb, aabb) >= d) {
-            return;
-        }
-        if let Some((s, c)) = &nodes[n].leaf {
-            if let Ok(d) = query::distance(&Pose2::identity(), c, pose, shape) {
-                offer(
-                    best,
-                    d.distance,
-                    Part::Body(self.shapes[*s].body),
-                    Part::Obstacle(obstacle),
-                );
-            }
-            return;
-        }
-        for &c in &nodes[n].children {
-            self.gap_obstacle(nodes, c, obstacle, pose, shape, aabb, best);
-        }
+        let mut visit = Gap::default();
+        self.walk_tree(q, plane, obstacles, &mut visit)?;
+        Ok(visit.best)
     }
 
     /// [`Model::clearance`] over every capsule pair: the reference the
@@ -543,6 +336,101 @@ impl Model {
         plane: Plane,
         obstacles: &[Obstacle],
     ) -> Result<Option<(f64, Part, Part)>, MechanismError> {
+        let mut visit = Gap::default();
+        self.walk_all(q, plane, obstacles, &mut visit)?;
+        Ok(visit.best)
+    }
+
+    /// Hand `visit` the capsule pairs (and capsule–obstacle pairs) whose
+    /// boxes it wants opened, from the root of the bounding tree down.
+    fn walk_tree(
+        &self,
+        q: &[f64],
+        plane: Plane,
+        obstacles: &[Obstacle],
+        visit: &mut dyn Visit,
+    ) -> Result<(), MechanismError> {
+        check_all(obstacles)?;
+        let (nodes, root) = self.bounding_tree(q, plane)?;
+        let Some(root) = root else { return Ok(()) };
+        self.walk_within(&nodes, root, visit);
+        for (i, o) in obstacles.iter().enumerate() {
+            let (pose, shape) = o.parry();
+            let thing = Thing {
+                index: i,
+                aabb: shape.compute_aabb(&pose),
+                pose,
+                shape,
+            };
+            self.walk_against(&nodes, root, &thing, visit);
+        }
+        Ok(())
+    }
+
+    /// Every pair under one node: each child's own pairs, then each pair
+    /// of children.
+    fn walk_within(&self, nodes: &[Node], n: usize, visit: &mut dyn Visit) {
+        let children = &nodes[n].children;
+        for (i, &a) in children.iter().enumerate() {
+            self.walk_within(nodes, a, visit);
+            for &b in &children[i + 1..] {
+                self.walk_between(nodes, a, b, visit);
+            }
+        }
+    }
+
+    /// The pairs with one capsule under `a` and one under `b`.
+    fn walk_between(&self, nodes: &[Node], a: usize, b: usize, visit: &mut dyn Visit) {
+        if !visit.open(&nodes[a].aabb, &nodes[b].aabb) {
+            return;
+        }
+        match (&nodes[a].leaf, &nodes[b].leaf) {
+            (Some((sa, ca)), Some((sb, cb))) => {
+                let (ba, bb) = (self.shapes[*sa].body, self.shapes[*sb].body);
+                if !self.ignores(ba, bb) {
+                    visit.pair(ba, ca, bb, cb);
+                }
+            }
+            // Split the node that has children (the bigger box first).
+            _ => {
+                let split_a = nodes[b].leaf.is_some()
+                    || (nodes[a].leaf.is_none()
+                        && nodes[a].aabb.volume() >= nodes[b].aabb.volume());
+                if split_a {
+                    for &c in &nodes[a].children {
+                        self.walk_between(nodes, c, b, visit);
+                    }
+                } else {
+                    for &c in &nodes[b].children {
+                        self.walk_between(nodes, a, c, visit);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The capsules under node `n` against one obstacle.
+    fn walk_against(&self, nodes: &[Node], n: usize, thing: &Thing, visit: &mut dyn Visit) {
+        if !visit.open(&nodes[n].aabb, &thing.aabb) {
+            return;
+        }
+        if let Some((s, c)) = &nodes[n].leaf {
+            visit.obstacle(self.shapes[*s].body, c, thing);
+            return;
+        }
+        for &c in &nodes[n].children {
+            self.walk_against(nodes, c, thing, visit);
+        }
+    }
+
+    /// Every capsule pair and every capsule–obstacle pair, no tree.
+    fn walk_all(
+        &self,
+        q: &[f64],
+        plane: Plane,
+        obstacles: &[Obstacle],
+        visit: &mut dyn Visit,
+    ) -> Result<(), MechanismError> {
         check_all(obstacles)?;
         let placed = self.place(q)?;
         let caps: Vec<(usize, Capsule)> = self
@@ -550,36 +438,122 @@ impl Model {
             .iter()
             .map(|s| (s.body, capsule(&placed.bodies, s, plane)))
             .collect();
-        let id = Pose2::identity();
-        let mut best: Option<(f64, Part, Part)> = None;
+        let things: Vec<Thing> = obstacles
+            .iter()
+            .enumerate()
+            .map(|(index, o)| {
+                let (pose, shape) = o.parry();
+                Thing {
+                    index,
+                    aabb: shape.compute_aabb(&pose),
+                    pose,
+                    shape,
+                }
+            })
+            .collect();
         for (i, (bi, ci)) in caps.iter().enumerate() {
             for (bj, cj) in &caps[i + 1..] {
-                if !self.ignores(*bi, *bj)
-                    && let Ok(d) = query::distance(&id, ci, &id, cj)
-                {
-                    offer(
-                        &mut best,
-                        d.distance,
-                        Part::Body(*bi.min(bj)),
-                        Part::Body(*bi.max(bj)),
-                    );
+                if !self.ignores(*bi, *bj) {
+                    visit.pair(*bi, ci, *bj, cj);
                 }
             }
-            for (k, o) in obstacles.iter().enumerate() {
-                let (pose, shape) = o.parry();
-                if let Ok(d) = query::distance(&id, ci, &pose, shape.as_ref()) {
-                    offer(&mut best, d.distance, Part::Body(*bi), Part::Obstacle(k));
-                }
+            for thing in &things {
+                visit.obstacle(*bi, ci, thing);
             }
         }
-        Ok(best)
+        Ok(())
     }
 }
 
-/// Keep the smaller gap.
-fn offer(best: &mut Option<(f64, Part, Part)>, d: f64, a: Part, b: Part) {
-    if best.is_none_or(|(bd, _, _)| d < bd) {
-        *best = Some((d, a, b));
+/// An obstacle as parry2d sees it.
+struct Thing {
+    index: usize,
+    pose: Pose2,
+    shape: Box<dyn ParryShape>,
+    aabb: Aabb,
+}
+
+/// What a walk does: whether two boxes are worth opening, and what to do
+/// with two capsules (of bodies `ba` and `bb`) or a capsule and an obstacle.
+trait Visit {
+    fn open(&mut self, a: &Aabb, b: &Aabb) -> bool;
+    fn pair(&mut self, ba: usize, ca: &Capsule, bb: usize, cb: &Capsule);
+    fn obstacle(&mut self, body: usize, c: &Capsule, thing: &Thing);
+}
+
+/// Collision: open overlapping boxes, keep intersecting pairs.
+#[derive(Default)]
+struct Collide {
+    out: Collisions,
+}
+
+impl Collide {
+    fn finish(mut self) -> Collisions {
+        self.out.pairs.sort();
+        self.out.pairs.dedup();
+        self.out
+    }
+}
+
+impl Visit for Collide {
+    fn open(&mut self, a: &Aabb, b: &Aabb) -> bool {
+        self.out.coarse_tests += 1;
+        a.intersects(b)
+    }
+
+    fn pair(&mut self, ba: usize, ca: &Capsule, bb: usize, cb: &Capsule) {
+        self.out.fine_tests += 1;
+        let id = Pose2::identity();
+        if query::intersection_test(&id, ca, &id, cb).is_ok_and(|r| r.intersecting) {
+            self.out
+                .pairs
+                .push((Part::Body(ba.min(bb)), Part::Body(ba.max(bb))));
+        }
+    }
+
+    fn obstacle(&mut self, body: usize, c: &Capsule, thing: &Thing) {
+        self.out.fine_tests += 1;
+        if query::intersection_test(&Pose2::identity(), c, &thing.pose, thing.shape.as_ref())
+            .is_ok_and(|r| r.intersecting)
+        {
+            self.out
+                .pairs
+                .push((Part::Body(body), Part::Obstacle(thing.index)));
+        }
+    }
+}
+
+/// Clearance: open boxes closer than the best gap so far, keep the
+/// smallest gap.
+#[derive(Default)]
+struct Gap {
+    best: Option<(f64, Part, Part)>,
+}
+
+impl Gap {
+    fn offer(&mut self, d: f64, a: Part, b: Part) {
+        if self.best.is_none_or(|(bd, _, _)| d < bd) {
+            self.best = Some((d, a, b));
+        }
+    }
+}
+
+impl Visit for Gap {
+    fn open(&mut self, a: &Aabb, b: &Aabb) -> bool {
+        self.best.is_none_or(|(d, _, _)| box_gap(a, b) < d)
+    }
+
+    fn pair(&mut self, ba: usize, ca: &Capsule, bb: usize, cb: &Capsule) {
+        let id = Pose2::identity();
+        if let Ok(d) = query::distance(&id, ca, &id, cb) {
+            self.offer(d.distance, Part::Body(ba.min(bb)), Part::Body(ba.max(bb)));
+        }
+    }
+
+    fn obstacle(&mut self, body: usize, c: &Capsule, thing: &Thing) {
+        if let Ok(d) = query::distance(&Pose2::identity(), c, &thing.pose, thing.shape.as_ref()) {
+            self.offer(d.distance, Part::Body(body), Part::Obstacle(thing.index));
+        }
     }
 }
 
