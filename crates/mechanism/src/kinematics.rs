@@ -1,6 +1,6 @@
 //! Forward kinematics by walking the tree, and the geometric Jacobian.
 
-use nalgebra::{DMatrix, Vector3};
+use nalgebra::DMatrix;
 
 use crate::error::MechanismError;
 use crate::model::{FrameRef, Model, Pose};
@@ -110,36 +110,12 @@ impl Model {
     pub fn jacobian(&self, q: &[f64], frame: &FrameRef) -> Result<DMatrix<f64>, MechanismError> {
         self.check_state(q)?;
         let mut jac = DMatrix::zeros(6, self.dof());
-        let p = self.pose_unchecked(q, frame).translation.vector;
-        self.jacobian_add(q, frame, &p, 1.0, &mut jac, 0);
+        // One walk gives both the frame's point and the joints' axes.
+        let mut axes = Vec::new();
+        let p = self.walk_axes(q, frame, &mut axes).translation.vector;
+        crate::ik::add_columns(&axes, &p, 1.0, &mut jac);
         self.fold_couplings(&mut jac);
         Ok(jac)
-    }
-
-    /// Add `sign` times the Jacobian of a point `p` riding on `frame`'s
-    /// body to rows `row..row+6` of `jac` (columns of the joints above it).
-    pub(crate) fn jacobian_add(
-        &self,
-        q: &[f64],
-        frame: &FrameRef,
-        p: &Vector3<f64>,
-        sign: f64,
-        jac: &mut DMatrix<f64>,
-        row: usize,
-    ) {
-        let mut axes = Vec::new();
-        self.walk_axes(q, frame, &mut axes);
-        if row == 0 && jac.nrows() == 6 {
-            crate::ik::add_columns(&axes, p, sign, jac);
-        } else {
-            let mut six = DMatrix::zeros(6, jac.ncols());
-            crate::ik::add_columns(&axes, p, sign, &mut six);
-            for r in 0..6 {
-                for c in 0..jac.ncols() {
-                    jac[(row + r, c)] += six[(r, c)];
-                }
-            }
-        }
     }
 
     /// Walk down to `frame`, noting the world axis of every moving joint on
