@@ -18,7 +18,7 @@ const pages = await page.evaluate(async () => {
 });
 // ONLY=<prefix> limits the run to the pages whose address starts with it.
 const only = process.env.ONLY;
-for (const address of ["", ...pages].filter((a) => !only || a.startsWith(only))) {
+for (const address of ["", "gallery", ...pages].filter((a) => !only || a.startsWith(only))) {
   await page.goto(`${server.url}#/${address}`);
   await page.waitForFunction((a) => document.documentElement.dataset.kinolabPage === a, address);
   await page.waitForTimeout(400);

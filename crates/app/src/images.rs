@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use egui::{ColorImage, TextureHandle, TextureOptions};
 
-use crate::lesson_view::error_box;
+use kinolab_widgets::widget::error_box;
 
 /// Decoded images by their path under `lessons/`.
 #[derive(Default)]
@@ -49,25 +49,13 @@ pub fn decode_png(bytes: &[u8]) -> Result<ColorImage, String> {
     }
 }
 
-/// Resolve `url` (relative to the lesson's unit folder) to embedded bytes.
-fn find_bytes(address: &str, url: &str) -> Option<&'static [u8]> {
-    let unit = address.split('/').next().unwrap_or("");
-    kinolab_lessons::bundled::images()
-        .iter()
-        .find_map(|(path, bytes)| {
-            let (folder, name) = path.split_once('/')?;
-            let folder_slug = folder.split_once('-').map_or(folder, |(_, rest)| rest);
-            (folder_slug == unit && name == url).then_some(*bytes)
-        })
-}
-
 impl ImageCache {
-    /// Show an embedded image, scaled to fit the column, with its alt text
-    /// as the caption and accessible label.
-    pub fn show(&mut self, ui: &mut egui::Ui, address: &str, url: &str, alt: &str) {
-        let key = format!("{address}|{url}");
-        let entry = self.textures.entry(key).or_insert_with(|| {
-            let bytes = find_bytes(address, url)
+    /// Show an image beside the lesson `file`, scaled to fit the column,
+    /// with its alt text as the caption and accessible label.
+    pub fn show(&mut self, ui: &mut egui::Ui, file: &str, url: &str, alt: &str) {
+        let path = kinolab_lessons::image_path(file, url);
+        let entry = self.textures.entry(path.clone()).or_insert_with(|| {
+            let bytes = kinolab_lessons::bundled::image(&path)
                 .ok_or_else(|| format!("no image `{url}` beside this lesson"))?;
             let image = decode_png(bytes)?;
             Ok(ui.ctx().load_texture(url, image, TextureOptions::LINEAR))

@@ -3,16 +3,17 @@
 
 use std::collections::HashMap;
 
-use egui::{Color32, RichText, Stroke};
+use egui::{RichText, Stroke};
 use kinolab_lessons::{Align, Block, Inline, Span, WidgetSpec, math::Math};
 
+use kinolab_formula::layout::{MathStyle, display_math, math_widget};
+use kinolab_widgets::theme;
+use kinolab_widgets::widget::{LabWidget, error_box};
+
 use crate::images::ImageCache;
-use crate::math_view::{MathStyle, display_math, math_widget};
 use crate::progress::Progress;
 use crate::quiz_view::{QuizState, quiz_ui};
 use crate::route::Page;
-use crate::theme;
-use crate::widgets::{self, LabWidget};
 
 /// A live widget, or why it could not be made.
 pub type WidgetSlot = Result<Box<dyn LabWidget>, String>;
@@ -21,6 +22,8 @@ pub type WidgetSlot = Result<Box<dyn LabWidget>, String>;
 pub struct LessonState<'a> {
     /// The lesson's `unit/lesson` address; quiz and widget ids hang off it.
     pub address: &'a str,
+    /// The lesson's file under `lessons/`; its images sit beside it.
+    pub file: &'a str,
     pub quizzes: &'a mut HashMap<String, QuizState>,
     pub widgets: &'a mut HashMap<String, WidgetSlot>,
     /// Widget states from a link, by widget id, applied once.
@@ -160,8 +163,8 @@ fn block_ui(
     // Images sit inside paragraphs in Markdown; draw them after the text.
     if let Block::Paragraph(spans) = block {
         for span in spans {
-            if let Span::Image { url, alt } = span {
-                state.images.show(ui, state.address, url, alt);
+            if let Span::Image { url, alt, .. } = span {
+                state.images.show(ui, state.file, url, alt);
             }
         }
     }
@@ -326,10 +329,15 @@ fn widget_ui(
 ) {
     let slot = slots
         .entry(id.to_owned())
-        .or_insert_with(|| widgets::create(spec));
+        .or_insert_with(|| kinolab_widgets::registry::create(spec));
     if let (Ok(widget), Some(saved)) = (slot.as_mut(), restore.remove(id)) {
         widget.restore(&saved);
     }
+    widget_frame(ui, id, &spec.name, slot);
+}
+
+/// A live widget in its frame, or the reason it cannot be shown.
+pub fn widget_frame(ui: &mut egui::Ui, id: &str, name: &str, slot: &mut WidgetSlot) {
     egui::Frame::group(ui.style())
         .inner_margin(10.0)
         .corner_radius(6.0)
@@ -337,29 +345,7 @@ fn widget_ui(
             ui.set_width(ui.available_width());
             ui.push_id(id, |ui| match slot {
                 Ok(widget) => widget.ui(ui),
-                Err(message) => error_box(
-                    ui,
-                    &format!("Widget `{}` cannot be shown", spec.name),
-                    message,
-                ),
+                Err(message) => error_box(ui, &format!("Widget `{name}` cannot be shown"), message),
             });
-        });
-}
-
-/// A visible, readable error in place of content that could not be shown.
-pub fn error_box(ui: &mut egui::Ui, title: &str, message: &str) {
-    egui::Frame::new()
-        .fill(Color32::from_rgba_unmultiplied(200, 40, 40, 40))
-        .stroke(Stroke::new(1.5, Color32::from_rgb(200, 50, 50)))
-        .corner_radius(6.0)
-        .inner_margin(10.0)
-        .show(ui, |ui| {
-            ui.set_width(ui.available_width());
-            ui.label(
-                RichText::new(title)
-                    .strong()
-                    .color(Color32::from_rgb(220, 60, 60)),
-            );
-            ui.label(message);
         });
 }

@@ -18,7 +18,7 @@ fn main() -> eframe::Result {
     eframe::run_native(
         "kinolab",
         options,
-        Box::new(move |cc| Ok(Box::new(kinolab_app::create(cc, &hash)))),
+        Box::new(move |cc| Ok(Box::new(kinolab_app::window::create(cc, &hash)))),
     )
 }
 
@@ -53,7 +53,7 @@ fn main() {
             .start(
                 canvas,
                 eframe::WebOptions::default(),
-                Box::new(move |cc| Ok(Box::new(kinolab_app::create(cc, &hash)))),
+                Box::new(move |cc| Ok(Box::new(kinolab_app::window::create(cc, &hash)))),
             )
             .await;
         match result {

@@ -6,7 +6,7 @@ use kinolab_lessons::{Answer, Inline, Quiz, QuizKind, Span};
 
 use crate::lesson_view::inline_ui;
 use crate::route::Page;
-use crate::theme;
+use kinolab_widgets::theme;
 
 /// What the learner has entered so far, and the last verdict.
 #[derive(Debug, Clone, Default, PartialEq)]

@@ -1,8 +1,9 @@
 //! Pages and their addresses in the URL hash.
 //!
-//! `#/automation/open-and-closed-worlds` opens that lesson; an empty hash
-//! (or `#/`) is the home page. `#dev` only tells the page shell to skip the
-//! offline cache and is otherwise the home page too.
+//! `#/automation/open-and-closed-worlds` opens that lesson; `#/gallery`
+//! the widget gallery and `#/gallery/<widget>` one widget alone; an empty
+//! hash (or `#/`) is the home page. `#dev` only tells the page shell to
+//! skip the offline cache and is otherwise the home page too.
 
 /// What the main area shows.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -10,6 +11,8 @@ pub enum Page {
     Home,
     /// A lesson by its `unit/lesson` address.
     Lesson(String),
+    /// Every widget, or one by name.
+    Gallery(Option<String>),
 }
 
 impl Page {
@@ -20,6 +23,15 @@ impl Page {
             .trim_start_matches('#')
             .trim_start_matches("dev")
             .trim_matches('/');
+        if path == "gallery" {
+            return Page::Gallery(None);
+        }
+        if let Some(widget) = path.strip_prefix("gallery/")
+            && !widget.is_empty()
+            && !widget.contains('/')
+        {
+            return Page::Gallery(Some(widget.to_owned()));
+        }
         match path.split_once('/') {
             Some((unit, lesson))
                 if !unit.is_empty() && !lesson.is_empty() && !lesson.contains('/') =>
@@ -34,7 +46,18 @@ impl Page {
     pub fn hash(&self) -> String {
         match self {
             Page::Home => "#/".to_owned(),
-            Page::Lesson(address) => format!("#/{address}"),
+            Page::Gallery(_) | Page::Lesson(_) => format!("#/{}", self.address()),
+        }
+    }
+
+    /// The page's address without `#/`: `unit/lesson`, `gallery`,
+    /// `gallery/<widget>`, or empty for the home page.
+    pub fn address(&self) -> String {
+        match self {
+            Page::Home => String::new(),
+            Page::Lesson(address) => address.clone(),
+            Page::Gallery(None) => "gallery".to_owned(),
+            Page::Gallery(Some(name)) => format!("gallery/{name}"),
         }
     }
 }
@@ -80,6 +103,10 @@ mod tests {
         assert_eq!(Page::from_hash("#/"), Page::Home);
         assert_eq!(Page::from_hash("#/automation"), Page::Home);
         assert_eq!(Page::from_hash("#/a/b/c"), Page::Home);
+        assert_eq!(Page::from_hash("#/gallery"), Page::Gallery(None));
+        let one = Page::Gallery(Some("dh-link".into()));
+        assert_eq!(Page::from_hash(&one.hash()), one);
+        assert_eq!(one.hash(), "#/gallery/dh-link");
     }
 
     #[test]

@@ -3,9 +3,9 @@
 
 use std::cell::RefCell;
 
-use crate::app::KinolabApp;
 use crate::progress::STORAGE_KEY;
 use crate::route::Page;
+use crate::shell::KinolabApp;
 
 thread_local! {
     /// The hash the app last acted on.
@@ -60,10 +60,7 @@ pub fn after_frame(app: &mut KinolabApp) {
     if let Some(json) = app.take_dirty_progress() {
         store_progress(&json);
     }
-    let page = match app.page() {
-        Page::Home => String::new(),
-        Page::Lesson(address) => address.clone(),
-    };
+    let page = app.page().address();
     if app.frames_drawn() == 0 {
         return;
     }
@@ -100,6 +97,24 @@ fn store_progress(json: &str) {
     if let Some(s) = storage() {
         let _ = s.set_item(STORAGE_KEY, json);
     }
+}
+
+/// Offer `bytes` to the learner as a file download.
+pub fn download(name: &str, mime: &str, bytes: &[u8]) -> Result<(), wasm_bindgen::JsValue> {
+    use wasm_bindgen::JsCast;
+    let array = js_sys::Uint8Array::from(bytes);
+    let parts = js_sys::Array::of1(&array);
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type(mime);
+    let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob)?;
+    let document = window().and_then(|w| w.document()).ok_or("no document")?;
+    let a: web_sys::HtmlAnchorElement = document.create_element("a")?.dyn_into()?;
+    a.set_href(&url);
+    a.set_download(name);
+    a.click();
+    web_sys::Url::revoke_object_url(&url)?;
+    Ok(())
 }
 
 /// Show a readable message over the canvas (start failures and panics).

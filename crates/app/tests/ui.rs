@@ -152,6 +152,7 @@ fn every_lesson_renders_without_widget_errors() {
     let addresses = app.course().unwrap().addresses();
     let mut h = harness(app);
     for address in addresses {
+        eprintln!("rendering {address}");
         h.state_mut().follow_hash(&format!("#/{address}"));
         // The drive widget animates, so step a fixed number of frames.
         h.run_steps(6);
@@ -206,16 +207,30 @@ fn the_disagreeing_wheel_challenge_is_graded_by_the_core() {
 }
 
 #[test]
-fn a_shared_layout_in_the_link_is_restored() {
-    let link =
-        "#/wheeled-locomotion/wheel-kinds?w0=f,90,0,0.25,0.1;f,-90,180,0.25,0.1;w,0,0,0.3,0.05,g=0";
-    let mut h = animated(KinolabApp::new(None, link));
+fn a_changed_layout_travels_in_the_link() {
+    let lesson = "#/wheeled-locomotion/wheel-kinds";
+    let mut h = animated(KinolabApp::new(None, lesson));
     h.run_steps(4);
-    // The lesson starts from the six-wheel example; the link has three.
-    h.get_by_label("Wheel 3 (swedish)");
-    assert!(h.query_by_label("Wheel 6 (spherical)").is_none());
-    // The app offers the same link back for the address bar.
-    assert_eq!(h.state_mut().take_state_hash().as_deref(), Some(link));
+    assert_eq!(h.state_mut().take_state_hash().as_deref(), Some(lesson));
+    // The lesson starts from the six-wheel example; add a seventh wheel.
+    h.get_all_by_label("fixed").next().unwrap().click();
+    h.run_steps(3);
+    h.get_all_by_label("Wheel 7 (fixed)").next().unwrap();
+    let link = h.state_mut().take_state_hash().unwrap();
+    assert!(link.starts_with(&format!("{lesson}?w0=")), "{link}");
+    // Opening the link shows the seven wheels, and offers the same link back.
+    let mut h = animated(KinolabApp::new(None, &link));
+    h.run_steps(4);
+    h.get_all_by_label("Wheel 7 (fixed)").next().unwrap();
+    assert_eq!(
+        h.state_mut().take_state_hash().as_deref(),
+        Some(link.as_str())
+    );
+    // A damaged state is ignored: the lesson's own layout shows.
+    let mut h = animated(KinolabApp::new(None, &format!("{lesson}?w0=aBROKEN")));
+    h.run_steps(4);
+    h.get_by_label("Wheel 6 (spherical)");
+    assert!(h.query_by_label("Wheel 7 (fixed)").is_none());
 }
 
 const GAINS_LESSON: &str = "#/motion-control/choosing-gains";
@@ -244,21 +259,28 @@ fn the_reach_within_exercise_is_graded_by_simulation() {
 
 #[test]
 fn the_playground_shows_the_run_and_its_stability() {
-    let link = "#/motion-control/feedback-and-polar-coordinates";
-    let mut h = animated(KinolabApp::new(None, link));
+    let lesson = "#/motion-control/feedback-and-polar-coordinates";
+    let mut h = animated(KinolabApp::new(None, lesson));
     h.run_steps(4);
     h.get_all_by_label_contains("Strongly stable: the robot converges")
         .next()
         .unwrap();
-    h.get_by_label_contains("Reached (within 1 mm and 0.1°) after 5.8");
-    // A link carrying unstable gains (k_β > 0) is restored and explained.
-    let shared = format!("{link}?w0=run,-1,0.5,0,0,0,0,3,8,1.5,auto,0,0,1,0,0!line_1");
-    let mut h = animated(KinolabApp::new(None, &shared));
+    h.get_by_label_contains("Reached (within 1 mm and 0.1°, and stayed) after 5.8");
+    // Set k_β from −1.5 to +1.5 as assistive technology would.
+    h.get_all_by_label("k_β")
+        .next()
+        .unwrap()
+        .set_value_accesskit(1.5);
     h.run_steps(4);
-    h.get_by_label_contains("k_β > 0: the heading term pushes the wrong way");
+    let link = h.state_mut().take_state_hash().unwrap();
+    assert!(link.starts_with(&format!("{lesson}?w0=")), "{link}");
+    // The link with unstable gains (k_β > 0) is restored and explained.
+    let mut h = animated(KinolabApp::new(None, &link));
+    h.run_steps(4);
+    h.get_by_label_contains("k_β > 0");
     h.get_by_label_contains("Not reached");
     assert_eq!(
         h.state_mut().take_state_hash().as_deref(),
-        Some(shared.as_str())
+        Some(link.as_str())
     );
 }

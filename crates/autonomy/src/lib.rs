@@ -12,8 +12,8 @@
 //! forms for both success rates; [`PickCell::run`] draws seeded random
 //! trials that the lab animates and that converge to those closed forms.
 
-use std::f64::consts::TAU;
-use std::fmt;
+use kinolab_common::error::non_negative;
+use kinolab_common::{FieldError, SplitMix64};
 
 /// The cell's parameters, all in metres.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,25 +37,6 @@ pub struct PickTrial {
     pub sensing_grasped: bool,
 }
 
-/// A parameter that is not a finite, non-negative length.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CellError {
-    pub field: &'static str,
-    pub value: f64,
-}
-
-impl fmt::Display for CellError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{}: must be a finite length ≥ 0 m, got {}",
-            self.field, self.value
-        )
-    }
-}
-
-impl std::error::Error for CellError {}
-
 /// Probability that a point uniform in a disc of `radius` lies within
 /// `tolerance` of the centre.
 fn within_tolerance(radius: f64, tolerance: f64) -> f64 {
@@ -66,48 +47,19 @@ fn within_tolerance(radius: f64, tolerance: f64) -> f64 {
     }
 }
 
-/// A small, fast, seedable generator (SplitMix64): the same seed always
-/// gives the same parts, so a lesson's figure is reproducible.
-#[derive(Debug, Clone)]
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Uniform over a disc of `radius` around the origin.
-    fn in_disc(&mut self, radius: f64) -> [f64; 2] {
-        let r = radius * self.unit().sqrt();
-        let angle = TAU * self.unit();
-        [r * angle.cos(), r * angle.sin()]
-    }
-}
-
 impl PickCell {
     /// A cell, checked: every length finite and non-negative.
     pub fn new(
         placement_error: f64,
         gripper_tolerance: f64,
         sensor_error: f64,
-    ) -> Result<Self, CellError> {
+    ) -> Result<Self, FieldError> {
         for (field, value) in [
             ("placement_error", placement_error),
             ("gripper_tolerance", gripper_tolerance),
             ("sensor_error", sensor_error),
         ] {
-            if !(value.is_finite() && value >= 0.0) {
-                return Err(CellError { field, value });
-            }
+            non_negative(field, value)?;
         }
         Ok(Self {
             placement_error,
@@ -129,7 +81,7 @@ impl PickCell {
 
     /// Draw `count` parts from `seed` and let both robots try each one.
     pub fn run(&self, count: usize, seed: u64) -> Vec<PickTrial> {
-        let mut rng = SplitMix64(seed);
+        let mut rng = SplitMix64::new(seed);
         let tolerance = self.gripper_tolerance;
         (0..count)
             .map(|_| {
@@ -144,5 +96,30 @@ impl PickCell {
                 }
             })
             .collect()
+    }
+}
+
+/// What the cell did with a batch of parts: the long-run rates and the
+/// seeded counts, as the JS API returns them.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct PickReport {
+    pub scripted_success: f64,
+    pub sensing_success: f64,
+    pub scripted_grasped: usize,
+    pub sensing_grasped: usize,
+    pub parts: Vec<[f64; 2]>,
+}
+
+impl PickCell {
+    /// [`PickCell::run`] summed up.
+    pub fn report(&self, count: usize, seed: u64) -> PickReport {
+        let trials = self.run(count, seed);
+        PickReport {
+            scripted_success: self.scripted_success(),
+            sensing_success: self.sensing_success(),
+            scripted_grasped: trials.iter().filter(|t| t.scripted_grasped).count(),
+            sensing_grasped: trials.iter().filter(|t| t.sensing_grasped).count(),
+            parts: trials.iter().map(|t| t.part).collect(),
+        }
     }
 }

@@ -61,6 +61,6 @@ fn bad_parameters_name_the_field() {
         PickCell::new(0.0, 0.0, f64::INFINITY)
             .unwrap_err()
             .to_string(),
-        "sensor_error: must be a finite length ≥ 0 m, got inf"
+        "sensor_error: must be a finite number, got inf"
     );
 }

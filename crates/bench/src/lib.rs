@@ -251,14 +251,37 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_kernel_does_real_work() {
-        for kernel in KERNELS {
-            let value = (kernel.run)();
+    fn kernels_compute_what_they_claim() {
+        let close = |name: &str, want: f64, tol: f64| {
+            let got = run_named(name, 1);
             assert!(
-                value.is_finite() && value > 0.0,
-                "{} returned {value}",
-                kernel.name
+                (got - want).abs() <= tol * want.abs().max(1.0),
+                "{name}: {got} vs {want}"
             );
+        };
+        // A 3 × 3 rotation matrix has three rows.
+        close("formula_parse_matrix", 3.0, 0.0);
+        // The hexagon's upper-right edge, from (0, 0.25) to (0.3, 0.2), is
+        // nearest: |0.3·(0.02 − 0.25) + 0.05·0.05| / √(0.3² + 0.05²).
+        close("stability_6_feet", 0.0665 / 0.0925f64.sqrt(), 1e-12);
+        // (2·17 − 1)! = 33! ≈ 8.683 × 10³⁶.
+        close("leg_events_17", 8.683_317_618_811_886e36, 1e-15);
+        // The Ackermann car: δM = 2, DOF = 3.
+        close("wheels_analyze_4", 5.0, 0.0);
+        close("wheels_build_analyze_4", 2.0, 0.0);
+        // The contract run ends at the goal; its path is at least the
+        // straight line from (−1, 0.5), √1.25 m, and not twice that.
+        let path = run_named("control_run_10s_1khz", 1);
+        assert!(
+            path > 1.25f64.sqrt() && path < 2.0 * 1.25f64.sqrt(),
+            "{path}"
+        );
+        // The scripted robot grasps a part within 1 cm of a 3 cm scatter:
+        // p = (1/3)² ≈ 0.11, so about 11 of 100 (binomial σ ≈ 3.1).
+        let grasped = run_named("pick_cell_100_parts", 1);
+        assert!((2.0..=21.0).contains(&grasped), "{grasped}");
+        for kernel in KERNELS {
+            assert!((kernel.run)().is_finite(), "{}", kernel.name);
         }
         assert_eq!(run_named("formula_parse_matrix", 3), 9.0);
         assert!(run_named("nope", 1).is_nan());

@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use kinolab_common::display::tidy_report;
 use kinolab_control::file::{RunSpec, from_json};
 use kinolab_control::{Gains, report};
 use serde_json::Value;
@@ -23,7 +24,7 @@ pub(crate) fn simulate(path: &Path) -> Result<Value, Failure> {
         .run
         .simulate()
         .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    Ok(report::simulation(&spec, &trajectory))
+    Ok(tidy_report(&report::simulation(&spec, &trajectory)))
 }
 
 pub(crate) fn batch_run(
@@ -34,19 +35,19 @@ pub(crate) fn batch_run(
     paths: bool,
 ) -> Result<Value, Failure> {
     let spec = load(path)?;
-    report::circle_batch(&spec, radius, count, heading_deg, paths).map_err(|e| {
-        match e.field.as_str() {
+    report::circle_batch(&spec, radius, count, heading_deg, paths)
+        .map(|r| tidy_report(&r))
+        .map_err(|e| match e.field.as_str() {
             "radius" | "count" | "heading" => Failure(format!("--{}: {}", e.field, e.message)),
             _ => Failure(format!("{}: {e}", path.display())),
-        }
-    })
+        })
 }
 
 pub(crate) fn gains(text: &str) -> Result<Value, Failure> {
     match numbers("gains", text)?.as_slice() {
         [r, a, b] => {
-            let g = Gains::new(*r, *a, *b).map_err(|e| Failure(format!("--gains: {e}")))?;
-            Ok(report::stability(&g))
+            let g = Gains::new(*r, *a, *b).map_err(|e| Failure(format!("gains: {e}")))?;
+            Ok(tidy_report(&report::stability(&g)))
         }
         other => Err(Failure(format!(
             "gains: expected three numbers K_RHO,K_ALPHA,K_BETA, got {}",

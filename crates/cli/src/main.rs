@@ -12,6 +12,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use kinolab_common::display::tidy_report;
 use serde_json::{Value, json};
 
 /// The Kinolab robotics lab's core, scriptable. Prints one JSON document per call.
@@ -153,9 +154,9 @@ fn point(option: &str, text: &str) -> Result<[f64; 2], Failure> {
 fn run(command: Command) -> Result<Value, Failure> {
     match command {
         Command::LegEvents { legs } => {
-            let exact = kinolab_locomotion::leg_events(legs)
+            let report = kinolab_locomotion::report::leg_events(legs)
                 .map_err(|e| Failure(format!("legs: {}", e.message)))?;
-            Ok(json!({ "legs": legs, "events": exact.to_string(), "events_f64": exact as f64 }))
+            Ok(tidy_report(&report))
         }
         Command::Stability { com, feet } => {
             let com = point("com", &com)?;
@@ -164,14 +165,9 @@ fn run(command: Command) -> Result<Value, Failure> {
                 .filter(|f| !f.trim().is_empty())
                 .map(|f| point("feet", f))
                 .collect::<Result<Vec<_>, _>>()?;
-            let s = kinolab_locomotion::static_stability(com, &feet)
+            let report = kinolab_locomotion::report::stability(com, &feet)
                 .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)))?;
-            Ok(json!({
-                "stable": s.stable,
-                "margin": s.margin,
-                "support_polygon": s.polygon,
-                "nearest_edge_point": s.nearest,
-            }))
+            Ok(tidy_report(&report))
         }
         Command::Analyze { robot } => wheels::analyze(&robot),
         Command::Drive {
@@ -208,41 +204,36 @@ fn run(command: Command) -> Result<Value, Failure> {
     }
 }
 
+/// Check lessons as the lab would show them: the Markdown, every widget
+/// block against the widget schema, and every image.
 fn check_lessons(dir: Option<PathBuf>) -> Result<Value, Failure> {
     let course = match dir {
         None => kinolab_lessons::bundled::course(),
         Some(dir) => {
-            let files = read_lesson_files(&dir)?;
+            let (files, images) = read_lesson_files(&dir)?;
             kinolab_lessons::Course::from_files(files.iter().map(|(p, t)| (p.as_str(), t.as_str())))
+                .and_then(|course| {
+                    let images: Vec<&str> = images.iter().map(String::as_str).collect();
+                    course.check_images(&images)?;
+                    Ok(course)
+                })
         }
     }
+    .and_then(|course| {
+        kinolab_schema::check_course(&course)?;
+        Ok(course)
+    })
     .map_err(|e| Failure(e.to_string()))?;
-    let units: Vec<Value> = course
-        .units
-        .iter()
-        .map(|u| {
-            json!({
-                "unit": u.slug,
-                "title": u.title,
-                "lessons": u.lessons.iter().map(|l| json!({
-                    "address": format!("{}/{}", u.slug, l.slug),
-                    "title": l.meta.title,
-                    "minutes": l.meta.minutes,
-                    "quizzes": l.blocks.iter().filter(|b| matches!(b, kinolab_lessons::Block::Quiz(_))).count(),
-                    "widgets": l.blocks.iter().filter_map(|b| match b {
-                        kinolab_lessons::Block::Widget(w) => Some(w.name.clone()),
-                        _ => None,
-                    }).collect::<Vec<_>>(),
-                })).collect::<Vec<_>>(),
-            })
-        })
-        .collect();
-    Ok(json!({ "ok": true, "units": units }))
+    Ok(json!({ "ok": true, "units": tidy_report(&course.summary()) }))
 }
 
-/// Every Markdown file under `dir`, as paths relative to it.
-fn read_lesson_files(dir: &std::path::Path) -> Result<Vec<(String, String)>, Failure> {
+/// Markdown and PNG files found in unit folders under `dir`: the Markdown
+/// with its text, and the images' paths, all relative to `dir`.
+type LessonFiles = (Vec<(String, String)>, Vec<String>);
+
+fn read_lesson_files(dir: &std::path::Path) -> Result<LessonFiles, Failure> {
     let mut out = Vec::new();
+    let mut images = Vec::new();
     let read_dir = |d: &std::path::Path| {
         std::fs::read_dir(d)
             .map_err(|e| Failure(format!("{}: cannot read folder: {e}", d.display())))
@@ -259,10 +250,12 @@ fn read_lesson_files(dir: &std::path::Path) -> Result<Vec<(String, String)>, Fai
                 let text = std::fs::read_to_string(file.path())
                     .map_err(|e| Failure(format!("{}: cannot read: {e}", file.path().display())))?;
                 out.push((format!("{folder}/{name}"), text));
+            } else if name.ends_with(".png") {
+                images.push(format!("{folder}/{name}"));
             }
         }
     }
-    Ok(out)
+    Ok((out, images))
 }
 
 fn main() -> ExitCode {

@@ -3,7 +3,8 @@
 
 use std::path::Path;
 
-use kinolab_mechanism::{Goal, MechanismError, Model, Options, Target, Vector3, report};
+use kinolab_common::display::tidy_report;
+use kinolab_mechanism::{FieldError, Goal, Model, Options, Target, Vector3, report};
 use serde_json::Value;
 
 use crate::{Failure, numbers};
@@ -20,15 +21,15 @@ fn load(path: &Path) -> Result<Model, Failure> {
 }
 
 /// Parse a model file whose mounted sub-mechanisms are files next to it.
-fn read_model(path: &Path, text: &str, depth: usize) -> Result<Model, MechanismError> {
+fn read_model(path: &Path, text: &str, depth: usize) -> Result<Model, FieldError> {
     let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
     kinolab_mechanism::file::from_json_with(text, &mut |name: &str| {
         if depth >= 16 {
-            return Err(MechanismError::new("", "mounts nested more than 16 deep"));
+            return Err(FieldError::new("", "mounts nested more than 16 deep"));
         }
         let sub = folder.join(name);
         let text = std::fs::read_to_string(&sub)
-            .map_err(|e| MechanismError::new("", format!("cannot read {}: {e}", sub.display())))?;
+            .map_err(|e| FieldError::new("", format!("cannot read {}: {e}", sub.display())))?;
         read_model(&sub, &text, depth + 1)
     })
 }
@@ -69,7 +70,7 @@ pub(crate) fn fk(path: &Path, q: &str, frame: Option<&str>) -> Result<Value, Fai
     let pose = model
         .pose(&q, &f)
         .map_err(|e| Failure(format!("--q: {e}")))?;
-    Ok(report::forward(&name, &pose))
+    Ok(tidy_report(&report::forward(&name, &pose)))
 }
 
 pub(crate) fn ik(
@@ -113,10 +114,12 @@ pub(crate) fn ik(
     };
     let seed = match seed {
         Some(text) => joint_values("seed", &model, text)?,
-        None => model.zero_state(),
+        None => model
+            .home_state()
+            .map_err(|e| Failure(format!("{}: {e}", path.display())))?,
     };
     let solution = model
         .solve(&[Goal::new(f, target)], &seed, &Options::default())
-        .map_err(|e| Failure(format!("--seed: {e}")))?;
-    Ok(report::inverse(&solution))
+        .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
+    Ok(tidy_report(&report::inverse(&solution)))
 }

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use kinolab_common::display::tidy_report;
 use kinolab_wheels::catalogue::{CATALOGUE, robot};
 use kinolab_wheels::{Chassis, Vector3, report};
 use serde_json::{Value, json};
@@ -21,7 +22,7 @@ pub(crate) fn load(path: &Path) -> Result<Chassis, Failure> {
 }
 
 pub(crate) fn analyze(path: &Path) -> Result<Value, Failure> {
-    Ok(report::analysis(&load(path)?))
+    Ok(tidy_report(&report::analysis(&load(path)?)))
 }
 
 pub(crate) fn drive(
@@ -31,7 +32,7 @@ pub(crate) fn drive(
     theta: Option<f64>,
 ) -> Result<Value, Failure> {
     let chassis = load(path)?;
-    let option = |e: kinolab_wheels::WheelsError| {
+    let option = |e: kinolab_common::FieldError| {
         if e.field == "theta" {
             Failure(format!("--theta: {}", e.message))
         } else {
@@ -56,7 +57,9 @@ pub(crate) fn drive(
                     )));
                 }
             };
-            report::inverse(&chassis, v, theta).map_err(option)
+            report::inverse(&chassis, v, theta)
+                .map(|r| tidy_report(&r))
+                .map_err(option)
         }
         (None, Some(text)) => {
             let spins: Vec<Option<f64>> = text
@@ -74,7 +77,9 @@ pub(crate) fn drive(
                     spins.len()
                 )));
             }
-            report::forward(&chassis, &spins, theta).map_err(option)
+            report::forward(&chassis, &spins, theta)
+                .map(|r| tidy_report(&r))
+                .map_err(option)
         }
         (Some(_), Some(_)) => Err(Failure(
             "drive: give either --twist (inverse kinematics) or --wheels (forward), not both"
@@ -90,9 +95,7 @@ pub(crate) fn drive(
 /// The catalogue, or one robot's file.
 pub(crate) fn robots(id: Option<&str>) -> Result<Value, Failure> {
     match id {
-        None => Ok(json!({
-            "robots": CATALOGUE.iter().map(|e| json!({ "id": e.id, "name": e.name, "summary": e.summary })).collect::<Vec<_>>(),
-        })),
+        None => Ok(json!({ "robots": tidy_report(&CATALOGUE) })),
         Some(id) => {
             let chassis = robot(id).map_err(|e| Failure(e.to_string()))?;
             serde_json::from_str(&chassis.to_json()).map_err(|e| Failure(format!("{id}: {e}")))

@@ -92,6 +92,52 @@ fn a_broken_lesson_folder_names_file_and_line() {
     );
 }
 
+/// `kinolab lessons` on a one-lesson folder whose body is `body`: the exit
+/// code and the error line.
+fn check_lesson_body(tag: &str, body: &str, image: bool) -> (i32, String) {
+    let dir = std::env::temp_dir().join(format!("kinolab-cli-{tag}-{}", std::process::id()));
+    let unit = dir.join("01-demo");
+    std::fs::create_dir_all(&unit).unwrap();
+    std::fs::write(unit.join("unit.md"), "---\ntitle: Demo\n---\n").unwrap();
+    let head = "---\ntitle: A\nminutes: 5\nobjectives:\n  - see\n---\n";
+    std::fs::write(unit.join("01-a.md"), format!("{head}{body}")).unwrap();
+    if image {
+        std::fs::write(unit.join("wheel.png"), b"png").unwrap();
+    }
+    let (code, _, stderr) = kinolab(&["lessons", dir.to_str().unwrap()]);
+    std::fs::remove_dir_all(&dir).ok();
+    (code, stderr.trim().to_owned())
+}
+
+#[test]
+fn the_checker_rejects_unknown_widgets_bad_parameters_and_missing_images() {
+    let widget = |body: &str| format!("Text.\n\n```widget\n{body}\n```\n");
+    let (code, err) = check_lesson_body("widget", &widget("flux-capacitor"), false);
+    assert_eq!(code, 2);
+    assert!(
+        err.starts_with("kinolab: 01-demo/01-a.md:9: there is no widget named `flux-capacitor`"),
+        "{err}"
+    );
+    let (_, err) = check_lesson_body("param", &widget("leg-events\nlegs: 40"), false);
+    assert_eq!(
+        err,
+        "kinolab: 01-demo/01-a.md:9: parameter `legs` must be a whole number from 1 to 12, found `40`"
+    );
+    let (_, err) = check_lesson_body("key", &widget("support-polygon\ncolour: red"), false);
+    assert!(
+        err.contains("widget `support-polygon` has no parameter `colour`"),
+        "{err}"
+    );
+    let (code, err) = check_lesson_body("image", "Text.\n\n![a wheel](tyre.png)\n", true);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "kinolab: 01-demo/01-a.md:9: there is no image `tyre.png` beside this lesson"
+    );
+    let (code, err) = check_lesson_body("ok", "Text.\n\n![a wheel](wheel.png)\n", true);
+    assert_eq!((code, err.as_str()), (0, ""));
+}
+
 #[test]
 fn bad_input_is_one_line_naming_the_field() {
     for (args, expected) in [

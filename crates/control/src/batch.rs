@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::error::{ControlError, positive};
+use crate::error::{FieldError, positive};
 use crate::pose::Pose;
 use crate::sim::{Run, Trajectory};
 
@@ -35,11 +35,11 @@ pub fn circle_starts(
     radius: f64,
     count: usize,
     heading: f64,
-) -> Result<Vec<Pose>, ControlError> {
+) -> Result<Vec<Pose>, FieldError> {
     positive("radius", radius)?;
     crate::error::finite("heading", heading)?;
     if count == 0 || count > MAX_STARTS {
-        return Err(ControlError::new(
+        return Err(FieldError::new(
             "count",
             format!("must be from 1 to {MAX_STARTS}, got {count}"),
         ));
@@ -82,9 +82,9 @@ impl From<(&Pose, &Trajectory)> for Outcome {
 }
 
 /// Run `run` once from each of `starts` (its own start is ignored).
-pub fn batch(run: &Run, starts: &[Pose]) -> Result<Vec<Trajectory>, ControlError> {
+pub fn batch(run: &Run, starts: &[Pose]) -> Result<Vec<Trajectory>, FieldError> {
     if starts.len() > MAX_STARTS {
-        return Err(ControlError::new(
+        return Err(FieldError::new(
             "starts",
             format!("at most {MAX_STARTS} starts, got {}", starts.len()),
         ));
@@ -96,7 +96,7 @@ pub fn batch(run: &Run, starts: &[Pose]) -> Result<Vec<Trajectory>, ControlError
         .map(|(i, start)| {
             one.start = *start;
             one.simulate().map_err(|e| {
-                ControlError::new(
+                FieldError::new(
                     e.field.replacen("start", &format!("starts[{i}]"), 1),
                     e.message,
                 )

@@ -1,17 +1,12 @@
 //! Graded exercises on the controller, checked by simulating the learner's
 //! gains, with feedback that says what to change.
 
-use crate::error::ControlError;
+use kinolab_common::Feedback;
+
+use crate::error::FieldError;
 use crate::polar::{Direction, Gains};
 use crate::pose::Pose;
 use crate::sim::{Driver, Run};
-
-/// The outcome of a check.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Verdict {
-    pub met: bool,
-    pub message: String,
-}
 
 /// Something a learner is asked to achieve with their gains.
 #[derive(Debug, Clone, PartialEq)]
@@ -51,7 +46,7 @@ impl Task {
     }
 
     /// Check gains against a [`Task::ReachWithin`] by simulating them.
-    pub fn check_gains(&self, gains: Gains) -> Result<Verdict, ControlError> {
+    pub fn check_gains(&self, gains: Gains) -> Result<Feedback, FieldError> {
         let Task::ReachWithin {
             start,
             goal,
@@ -59,7 +54,7 @@ impl Task {
             forward_only,
         } = self
         else {
-            return Err(ControlError::new("task", "this task is not about gains"));
+            return Err(FieldError::new("task", "this task is not about gains"));
         };
         let mut run = Run::polar(*start, *goal, gains)?;
         run.duration = *time_limit;
@@ -73,15 +68,15 @@ impl Task {
         let t = run.simulate()?;
         let stability = gains.stability();
         Ok(match t.time_to_goal {
-            Some(time) => Verdict {
+            Some(time) => Feedback {
                 met: true,
                 message: format!("Reached in {time:.2} s, within the {time_limit} s allowed."),
             },
-            None if !stability.locally_stable => Verdict {
+            None if !stability.locally_stable => Feedback {
                 met: false,
                 message: format!("Not reached. {}", stability.explanation),
             },
-            None => Verdict {
+            None => Feedback {
                 met: false,
                 message: format!(
                     "Not reached within {time_limit} s: still {:.3} m and {:.1}° off. {}",
@@ -98,15 +93,15 @@ impl Task {
     }
 
     /// Check a learner's marks against a [`Task::SpotUnstable`].
-    pub fn check_marks(&self, marked: &[bool]) -> Result<Verdict, ControlError> {
+    pub fn check_marks(&self, marked: &[bool]) -> Result<Feedback, FieldError> {
         let Task::SpotUnstable { sets } = self else {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "task",
                 "this task is not about marking gain sets",
             ));
         };
         if marked.len() != sets.len() {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "marked",
                 format!("expected {} marks, got {}", sets.len(), marked.len()),
             ));
@@ -131,12 +126,12 @@ impl Task {
             }
         }
         Ok(if wrong.is_empty() {
-            Verdict {
+            Feedback {
                 met: true,
                 message: "All correct: exactly the unstable sets are marked.".into(),
             }
         } else {
-            Verdict {
+            Feedback {
                 met: false,
                 message: format!("Not yet — {}", wrong.join("; ")),
             }
@@ -159,7 +154,7 @@ mod tests {
     }
 
     #[test]
-    fn reaching_in_time_is_checked_by_simulation() -> Result<(), ControlError> {
+    fn reaching_in_time_is_checked_by_simulation() -> Result<(), FieldError> {
         // The textbook gains take about 5.8 s from this start.
         let slow = reach(3.0).check_gains(TEXTBOOK_GAINS)?;
         assert!(!slow.met, "{}", slow.message);
@@ -181,7 +176,7 @@ mod tests {
     }
 
     #[test]
-    fn marks_are_compared_with_the_conditions() -> Result<(), ControlError> {
+    fn marks_are_compared_with_the_conditions() -> Result<(), FieldError> {
         let task = Task::SpotUnstable {
             sets: vec![
                 TEXTBOOK_GAINS,

@@ -8,7 +8,7 @@
 use kinolab_wheels::Chassis;
 use serde::Deserialize;
 
-use crate::error::ControlError;
+use crate::error::FieldError;
 use crate::noise::Noise;
 use crate::plan::{Limits, Plan, Segment};
 use crate::polar::{Direction, Gains};
@@ -144,9 +144,9 @@ pub struct RunSpec {
 }
 
 /// The robot a run names: a catalogue id, or an inline robot file.
-fn robot(value: Option<&serde_json::Value>) -> Result<Chassis, ControlError> {
-    let wheels_error = |e: kinolab_wheels::WheelsError| {
-        ControlError::new(
+fn robot(value: Option<&serde_json::Value>) -> Result<Chassis, FieldError> {
+    let wheels_error = |e: kinolab_common::FieldError| {
+        FieldError::new(
             format!("robot.{}", e.field).trim_end_matches('.'),
             e.message,
         )
@@ -154,12 +154,12 @@ fn robot(value: Option<&serde_json::Value>) -> Result<Chassis, ControlError> {
     match value {
         None => kinolab_wheels::catalogue::robot("differential-drive").map_err(wheels_error),
         Some(serde_json::Value::String(id)) => {
-            kinolab_wheels::catalogue::robot(id).map_err(|e| ControlError::new("robot", e.message))
+            kinolab_wheels::catalogue::robot(id).map_err(|e| FieldError::new("robot", e.message))
         }
         Some(object @ serde_json::Value::Object(_)) => {
             Chassis::from_json(&object.to_string()).map_err(wheels_error)
         }
-        Some(_) => Err(ControlError::new(
+        Some(_) => Err(FieldError::new(
             "robot",
             "must be a catalogue id such as \"differential-drive\" or a robot object",
         )),
@@ -167,7 +167,7 @@ fn robot(value: Option<&serde_json::Value>) -> Result<Chassis, ControlError> {
 }
 
 /// Parse a run file. Errors name the JSON path of the bad field.
-pub fn from_json(text: &str) -> Result<RunSpec, ControlError> {
+pub fn from_json(text: &str) -> Result<RunSpec, FieldError> {
     let mut de = serde_json::Deserializer::from_str(text);
     let file: RunFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
@@ -179,12 +179,12 @@ pub fn from_json(text: &str) -> Result<RunSpec, ControlError> {
             .next()
             .unwrap_or(&message)
             .to_string();
-        ControlError::new(if path == "." { String::new() } else { path }, message)
+        FieldError::new(if path == "." { String::new() } else { path }, message)
     })?;
     from_file(&file)
 }
 
-fn from_file(file: &RunFile) -> Result<RunSpec, ControlError> {
+fn from_file(file: &RunFile) -> Result<RunSpec, FieldError> {
     let robot = robot(file.robot.as_ref())?;
     let drive = DriveModel::new(&robot)?;
     let start = Pose::from(&file.start);
@@ -196,9 +196,9 @@ fn from_file(file: &RunFile) -> Result<RunSpec, ControlError> {
             direction,
         } => {
             let gains = Gains::new(*k_rho, *k_alpha, *k_beta)
-                .map_err(|e| ControlError::new(format!("controller.{}", e.field), e.message))?;
+                .map_err(|e| FieldError::new(format!("controller.{}", e.field), e.message))?;
             let Some(goal) = &file.goal else {
-                return Err(ControlError::new(
+                return Err(FieldError::new(
                     "goal",
                     "missing field (the polar controller needs a goal)",
                 ));
@@ -224,7 +224,7 @@ fn from_file(file: &RunFile) -> Result<RunSpec, ControlError> {
                 } else {
                     format!("controller.{}", e.field)
                 };
-                ControlError::new(field, e.message)
+                FieldError::new(field, e.message)
             })?;
             let mut run = Run::open_loop(plan)?;
             if let Some(goal) = &file.goal {

@@ -26,9 +26,9 @@ mod pose;
 pub mod report;
 mod sim;
 
-pub use error::ControlError;
+pub use error::FieldError;
 pub use noise::{NOISE_INTERVAL, Noise};
 pub use plan::{Limits, MAX_SEGMENTS, Plan, Profile, Scheduled, Segment};
 pub use polar::{Condition, Direction, Gains, Polar, Stability, TEXTBOOK_GAINS};
-pub use pose::{Pose, wrap};
+pub use pose::Pose;
 pub use sim::{DriveModel, Driver, MAX_SAMPLES, MAX_STEPS, Run, Sample, Tolerance, Trajectory};

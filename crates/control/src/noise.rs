@@ -9,7 +9,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::{ControlError, finite};
+use crate::error::{FieldError, finite};
 
 /// Seconds between changes of slip and push.
 pub const NOISE_INTERVAL: f64 = 0.05;
@@ -28,9 +28,9 @@ pub struct Noise {
 }
 
 impl Noise {
-    pub(crate) fn check(&self) -> Result<(), ControlError> {
+    pub(crate) fn check(&self) -> Result<(), FieldError> {
         if !(0.0..=0.9).contains(&finite("noise.slip", self.slip)?) {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "noise.slip",
                 format!("must be from 0 to 0.9, got {}", self.slip),
             ));
@@ -40,7 +40,7 @@ impl Noise {
             ("noise.push_turn", self.push_turn),
         ] {
             if finite(field, v)? < 0.0 {
-                return Err(ControlError::new(
+                return Err(FieldError::new(
                     field,
                     format!("must not be negative, got {v}"),
                 ));
@@ -51,9 +51,7 @@ impl Noise {
 
     /// A number in [0, 1) for this interval and channel.
     pub fn uniform(&self, interval: u64, channel: u64) -> f64 {
-        let h = mix(self.seed ^ mix(interval.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ channel));
-        // The top 53 bits as a fraction.
-        (h >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        kinolab_common::random::unit_hash(self.seed, interval, channel)
     }
 
     /// Fractions of v and of ω lost to slip during `interval`.
@@ -73,14 +71,6 @@ impl Noise {
             self.push_turn * centred(2),
         ]
     }
-}
-
-/// The SplitMix64 finaliser: a fast, well-mixed 64-bit hash.
-fn mix(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
 }
 
 #[cfg(test)]

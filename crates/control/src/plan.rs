@@ -7,7 +7,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::{ControlError, finite, positive};
+use crate::error::{FieldError, finite, positive};
 use crate::pose::Pose;
 
 /// One piece of path, relative to where the previous one ended.
@@ -166,26 +166,82 @@ impl Segment {
         )
     }
 
-    fn check(&self, i: usize) -> Result<(), ControlError> {
+    fn check(&self, i: usize) -> Result<(), FieldError> {
         let field = |name: &str| format!("segments[{i}].{name}");
         match *self {
             Segment::Line { length } => {
-                finite(&field("length"), length)?;
+                finite(field("length"), length)?;
             }
             Segment::Arc { radius, angle } => {
-                positive(&field("radius"), radius)?;
-                finite(&field("angle"), angle)?;
+                positive(field("radius"), radius)?;
+                finite(field("angle"), angle)?;
             }
             Segment::Turn { angle } => {
-                finite(&field("angle"), angle)?;
+                finite(field("angle"), angle)?;
             }
         }
         Ok(())
     }
 }
 
+impl Segment {
+    /// Segments written the short way people type them:
+    /// `line 1; arc 0.5 90; turn -90` (metres and degrees; a negative
+    /// length drives backwards, a negative angle turns right).
+    pub fn parse_list(text: &str) -> Result<Vec<Segment>, FieldError> {
+        let mut out = Vec::new();
+        for (i, part) in text
+            .split(';')
+            .map(str::trim)
+            .filter(|p| !p.is_empty())
+            .enumerate()
+        {
+            out.push(Self::parse_one(part).ok_or_else(|| {
+                FieldError::new(
+                    format!("segments[{i}]"),
+                    format!(
+                        "`{part}`: write `line METRES`, `arc RADIUS DEGREES` (radius > 0) or `turn DEGREES`"
+                    ),
+                )
+            })?);
+        }
+        if out.is_empty() {
+            return Err(FieldError::new(
+                "segments",
+                "the plan is empty: add a segment such as `line 1`",
+            ));
+        }
+        if out.len() > MAX_SEGMENTS {
+            return Err(FieldError::new(
+                "segments",
+                format!("at most {MAX_SEGMENTS} segments, got {}", out.len()),
+            ));
+        }
+        Ok(out)
+    }
+
+    fn parse_one(part: &str) -> Option<Segment> {
+        let mut words = part.split_whitespace();
+        let kind = words.next()?;
+        let nums: Vec<f64> = words
+            .map(|w| w.parse::<f64>().ok().filter(|x| x.is_finite()))
+            .collect::<Option<_>>()?;
+        match (kind, nums.as_slice()) {
+            ("line", [length]) => Some(Segment::Line { length: *length }),
+            ("arc", [radius, deg]) if *radius > 0.0 => Some(Segment::Arc {
+                radius: *radius,
+                angle: deg.to_radians(),
+            }),
+            ("turn", [deg]) => Some(Segment::Turn {
+                angle: deg.to_radians(),
+            }),
+            _ => None,
+        }
+    }
+}
+
 impl Limits {
-    fn check(&self) -> Result<(), ControlError> {
+    fn check(&self) -> Result<(), FieldError> {
         positive("limits.max_speed", self.max_speed)?;
         positive("limits.max_accel", self.max_accel)?;
         positive("limits.max_turn_rate", self.max_turn_rate)?;
@@ -196,7 +252,7 @@ impl Limits {
 
 impl Plan {
     /// Schedule `segments` from `start` within `limits`.
-    pub fn new(start: Pose, segments: &[Segment], limits: Limits) -> Result<Self, ControlError> {
+    pub fn new(start: Pose, segments: &[Segment], limits: Limits) -> Result<Self, FieldError> {
         limits.check()?;
         for (name, v) in [
             ("start.x", start.x),
@@ -206,7 +262,7 @@ impl Plan {
             finite(name, v)?;
         }
         if segments.len() > MAX_SEGMENTS {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "segments",
                 format!("at most {MAX_SEGMENTS} segments, got {}", segments.len()),
             ));
@@ -292,7 +348,7 @@ impl Plan {
         &self,
         chassis: &kinolab_wheels::Chassis,
         t: f64,
-    ) -> Result<kinolab_wheels::InverseSolution, kinolab_wheels::WheelsError> {
+    ) -> Result<kinolab_wheels::InverseSolution, kinolab_common::FieldError> {
         let (v, omega) = self.command(t);
         chassis.inverse(kinolab_wheels::Vector3::new(v, 0.0, omega))
     }
@@ -302,6 +358,30 @@ impl Plan {
 mod tests {
     use super::*;
     use std::f64::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn short_plans_parse_and_name_the_bad_segment() {
+        let segs = Segment::parse_list("line 1; arc 0.5 90;turn -45 ").unwrap_or_default();
+        assert_eq!(
+            segs,
+            vec![
+                Segment::Line { length: 1.0 },
+                Segment::Arc {
+                    radius: 0.5,
+                    angle: FRAC_PI_2
+                },
+                Segment::Turn { angle: -PI / 4.0 }
+            ]
+        );
+        let e = Segment::parse_list("line 1; arc -0.5 90").unwrap_err();
+        assert_eq!(e.field, "segments[1]");
+        assert!(e.message.starts_with("`arc -0.5 90`"), "{e}");
+        assert!(Segment::parse_list("jump 3").is_err());
+        assert!(Segment::parse_list("line").is_err());
+        assert_eq!(Segment::parse_list(" ; ").unwrap_err().field, "segments");
+        let long = vec!["line 1"; MAX_SEGMENTS + 1].join(";");
+        assert!(Segment::parse_list(&long).is_err());
+    }
 
     #[test]
     fn trapezoid_and_triangle() {

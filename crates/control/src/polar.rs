@@ -10,8 +10,10 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use nalgebra::{Complex, Matrix3};
 use serde::{Deserialize, Serialize};
 
-use crate::error::{ControlError, finite};
-use crate::pose::{Pose, wrap_near};
+use crate::error::{FieldError, finite};
+use kinolab_common::angle::{wrap, wrap_near};
+
+use crate::pose::Pose;
 
 /// The three gains (k_ρ, k_α, k_β).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -58,13 +60,13 @@ impl Polar {
     /// ρ, α, β of a pose given in the goal frame, for forward driving.
     /// At the goal itself (ρ = 0) the bearing is taken as 0: no NaN.
     pub fn forward(pose: &Pose) -> Self {
-        Self::near(pose.x, pose.y, crate::pose::wrap(pose.theta), false)
+        Self::near(pose.x, pose.y, wrap(pose.theta), false)
     }
 
     /// The same pose seen by a robot driving rear first: α_b = wrap(α − π),
     /// β_b = wrap(−θ − α_b).
     pub fn backward(pose: &Pose) -> Self {
-        Self::near(pose.x, pose.y, crate::pose::wrap(pose.theta), true)
+        Self::near(pose.x, pose.y, wrap(pose.theta), true)
     }
 
     /// The integrator's fast path: θ must lie within (−2π, 2π].
@@ -131,7 +133,7 @@ pub struct Stability {
 impl Gains {
     /// Gains with finite values (any signs: unstable gains are worth
     /// simulating too).
-    pub fn new(k_rho: f64, k_alpha: f64, k_beta: f64) -> Result<Self, ControlError> {
+    pub fn new(k_rho: f64, k_alpha: f64, k_beta: f64) -> Result<Self, FieldError> {
         Ok(Self {
             k_rho: finite("k_rho", k_rho)?,
             k_alpha: finite("k_alpha", k_alpha)?,
@@ -236,7 +238,7 @@ impl Gains {
             if k_beta == 0.0 {
                 "k_β = 0: nothing corrects the final heading; on the boundary the heading error does not decay.".to_string()
             } else {
-                "k_β > 0: the heading term pushes the wrong way; the robot spirals off.".to_string()
+                "k_β > 0: the heading term pushes the wrong way; the robot reaches the goal's position but arrives facing backwards.".to_string()
             }
         } else if k_alpha == k_rho {
             "k_α = k_ρ: on the boundary; the bearing error oscillates without decaying.".to_string()
@@ -282,8 +284,8 @@ mod tests {
         let pose = Pose::new(0.7, -0.4, 2.5);
         let b = Polar::backward(&pose);
         let f = Polar::forward(&pose);
-        assert!((b.alpha - crate::pose::wrap(f.alpha - PI)).abs() < 1e-12);
-        assert!((b.beta - crate::pose::wrap(-2.5 - b.alpha)).abs() < 1e-12);
+        assert!((b.alpha - wrap(f.alpha - PI)).abs() < 1e-12);
+        assert!((b.beta - wrap(-2.5 - b.alpha)).abs() < 1e-12);
     }
 
     #[test]
@@ -301,12 +303,33 @@ mod tests {
     }
 
     #[test]
+    fn a_positive_k_beta_arrives_facing_backwards() {
+        // What the explanation promises: on the goal's position, heading off by 180°.
+        let g = Gains::new(3.0, 8.0, 1.5).unwrap_or_else(|e| panic!("{e}"));
+        assert!(
+            g.stability()
+                .explanation
+                .contains("arrives facing backwards")
+        );
+        let run = crate::sim::Run::polar(Pose::new(-1.0, 0.5, 0.0), Pose::default(), g)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let t = run.simulate().unwrap_or_else(|e| panic!("{e}"));
+        assert!(!t.reached);
+        assert!(t.final_position_error < 1e-3, "{}", t.final_position_error);
+        assert!(
+            t.final_heading_error.abs() > 179.0f64.to_radians(),
+            "{}",
+            t.final_heading_error
+        );
+    }
+
+    #[test]
     fn closed_form_eigenvalues_match_nalgebra() {
         for g in [
             TEXTBOOK_GAINS,
-            Gains::new(1.0, 1.5, -4.0).unwrap_or(TEXTBOOK_GAINS),
-            Gains::new(2.0, 1.0, 0.5).unwrap_or(TEXTBOOK_GAINS),
-            Gains::new(0.5, 30.0, -0.1).unwrap_or(TEXTBOOK_GAINS),
+            Gains::new(1.0, 1.5, -4.0).unwrap_or_else(|e| panic!("{e}")),
+            Gains::new(2.0, 1.0, 0.5).unwrap_or_else(|e| panic!("{e}")),
+            Gains::new(0.5, 30.0, -0.1).unwrap_or_else(|e| panic!("{e}")),
         ] {
             let mut ours: Vec<(f64, f64)> = g.eigenvalues().iter().map(|z| (z.re, z.im)).collect();
             let mut theirs: Vec<(f64, f64)> = g
@@ -338,7 +361,7 @@ mod tests {
         assert!(s.eigenvalues.iter().all(|e| e[0] < 0.0));
 
         let weak = Gains::new(3.0, 4.0, -1.5)
-            .unwrap_or(TEXTBOOK_GAINS)
+            .unwrap_or_else(|e| panic!("{e}"))
             .stability();
         assert!(weak.locally_stable && !weak.strongly_stable);
 
@@ -348,7 +371,7 @@ mod tests {
             ((3.0, 2.0, -1.5), 2),
         ] {
             let s = Gains::new(g.0, g.1, g.2)
-                .unwrap_or(TEXTBOOK_GAINS)
+                .unwrap_or_else(|e| panic!("{e}"))
                 .stability();
             assert!(!s.locally_stable, "{g:?}");
             assert!(!s.conditions[failing].holds);
@@ -363,7 +386,7 @@ mod tests {
         // the imaginary axis.
         for g in [(3.0, 3.0, -1.5), (3.0, 8.0, 0.0)] {
             let s = Gains::new(g.0, g.1, g.2)
-                .unwrap_or(TEXTBOOK_GAINS)
+                .unwrap_or_else(|e| panic!("{e}"))
                 .stability();
             assert!(!s.locally_stable, "{g:?}");
             assert!(s.eigenvalues.iter().any(|e| e[0].abs() < 1e-12), "{g:?}");

@@ -1,5 +1,6 @@
 //! Poses in the plane and the change to the goal's frame.
 
+use kinolab_common::angle::wrap;
 use serde::{Deserialize, Serialize};
 
 /// A robot pose (x, y, θ): metres and radians, in the world frame unless
@@ -45,25 +46,6 @@ impl Pose {
     }
 }
 
-/// An angle wrapped to (−π, π].
-pub fn wrap(angle: f64) -> f64 {
-    kinolab_wheels::wrap(angle)
-}
-
-/// [`wrap`] for angles already within (−3π, 3π], as the controller's are:
-/// two comparisons instead of a division, for the integrator's inner loop.
-#[inline]
-pub(crate) fn wrap_near(angle: f64) -> f64 {
-    use std::f64::consts::{PI, TAU};
-    if angle > PI {
-        angle - TAU
-    } else if angle <= -PI {
-        angle + TAU
-    } else {
-        angle
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -79,13 +61,5 @@ mod tests {
         let ahead =
             Pose::new(1.0, 0.0, 0.0).from_frame(&Pose::new(0.0, 0.0, std::f64::consts::FRAC_PI_2));
         assert!(ahead.x.abs() < 1e-12 && (ahead.y - 1.0).abs() < 1e-12);
-    }
-
-    #[test]
-    fn near_wrap_agrees_with_full_wrap() {
-        for i in -300..=300 {
-            let a = f64::from(i) * 0.031;
-            assert!((wrap_near(a) - wrap(a)).abs() < 1e-12, "{a}");
-        }
     }
 }

@@ -15,11 +15,13 @@
 use kinolab_wheels::{Chassis, Vector3, WheelKind};
 use serde::Serialize;
 
-use crate::error::{ControlError, finite, positive};
+use crate::error::{FieldError, finite, positive};
 use crate::noise::{NOISE_INTERVAL, Noise};
 use crate::plan::Plan;
 use crate::polar::{Direction, Gains, Polar};
-use crate::pose::{Pose, wrap, wrap_near};
+use kinolab_common::angle::{wrap, wrap_near};
+
+use crate::pose::Pose;
 
 /// What decides (v, ω).
 #[derive(Debug, Clone, PartialEq)]
@@ -64,14 +66,14 @@ impl DriveModel {
     /// The drive of a robot that moves like a unicycle: driving straight
     /// and turning on the spot must both be admissible, and the motors are
     /// its fixed and Swedish wheels (castors and spheres just follow).
-    pub fn new(chassis: &Chassis) -> Result<Self, ControlError> {
+    pub fn new(chassis: &Chassis) -> Result<Self, FieldError> {
         let name = chassis.name().to_string();
         if let Some(i) = chassis
             .wheels()
             .iter()
             .position(|w| w.kind == WheelKind::Steered)
         {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 format!("robot.wheels[{i}]"),
                 format!(
                     "`{name}` has a steered wheel; the unicycle simulation needs a robot driven by fixed or Swedish wheels, such as differential-drive"
@@ -81,7 +83,7 @@ impl DriveModel {
         let straight = chassis.inverse(Vector3::new(1.0, 0.0, 0.0))?;
         let spin = chassis.inverse(Vector3::new(0.0, 0.0, 1.0))?;
         if !straight.feasible || !spin.feasible {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "robot",
                 format!(
                     "`{name}` cannot both drive straight ahead and turn on the spot, as the unicycle model needs"
@@ -96,7 +98,7 @@ impl DriveModel {
             .map(|(i, _)| i)
             .collect();
         if driven.is_empty() {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "robot",
                 format!("`{name}` has no driven (fixed or Swedish) wheel"),
             ));
@@ -200,7 +202,7 @@ pub struct Trajectory {
 impl Run {
     /// The polar controller with the contract's defaults: dt = 1 ms, 10 s,
     /// a sample every 100 steps, the catalogue's differential drive.
-    pub fn polar(start: Pose, goal: Pose, gains: Gains) -> Result<Self, ControlError> {
+    pub fn polar(start: Pose, goal: Pose, gains: Gains) -> Result<Self, FieldError> {
         Ok(Self {
             start,
             goal,
@@ -220,7 +222,7 @@ impl Run {
     }
 
     /// An open-loop run of `plan`; the goal is where the plan ends.
-    pub fn open_loop(plan: Plan) -> Result<Self, ControlError> {
+    pub fn open_loop(plan: Plan) -> Result<Self, FieldError> {
         let goal = plan.end();
         let start = plan.start;
         let duration = (plan.duration() + 1.0).max(1.0);
@@ -231,20 +233,20 @@ impl Run {
         })
     }
 
-    fn check(&self) -> Result<usize, ControlError> {
+    fn check(&self) -> Result<usize, FieldError> {
         for (field, pose) in [("start", &self.start), ("goal", &self.goal)] {
             for (name, v) in [("x", pose.x), ("y", pose.y), ("theta", pose.theta)] {
-                finite(&format!("{field}.{name}"), v)?;
+                finite(format!("{field}.{name}"), v)?;
             }
         }
         positive("dt", self.dt)?;
         positive("duration", self.duration)?;
         if self.output_every == 0 {
-            return Err(ControlError::new("output_every", "must be at least 1"));
+            return Err(FieldError::new("output_every", "must be at least 1"));
         }
         let steps = (self.duration / self.dt - 1e-9).ceil().max(1.0);
         if steps > MAX_STEPS as f64 {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "dt",
                 format!(
                     "duration / dt = {steps:.0} steps; at most {MAX_STEPS} (raise dt or shorten the run)"
@@ -253,7 +255,7 @@ impl Run {
         }
         let steps = steps as usize;
         if steps / self.output_every > MAX_SAMPLES {
-            return Err(ControlError::new(
+            return Err(FieldError::new(
                 "output_every",
                 format!(
                     "would keep {} samples; at most {MAX_SAMPLES}",
@@ -267,7 +269,7 @@ impl Run {
         if let Some(rate) = self.control_rate {
             positive("control_rate", rate)?;
             if 1.0 / rate < self.dt * (1.0 - 1e-9) {
-                return Err(ControlError::new(
+                return Err(FieldError::new(
                     "control_rate",
                     format!(
                         "{rate} Hz is faster than the integration step (1/dt = {} Hz)",
@@ -278,7 +280,7 @@ impl Run {
         }
         if let Driver::Polar { gains, .. } = &self.driver {
             Gains::new(gains.k_rho, gains.k_alpha, gains.k_beta)
-                .map_err(|e| ControlError::new(format!("controller.{}", e.field), e.message))?;
+                .map_err(|e| FieldError::new(format!("controller.{}", e.field), e.message))?;
         }
         if let Some(noise) = &self.noise {
             noise.check()?;
@@ -287,7 +289,7 @@ impl Run {
     }
 
     /// Integrate the run.
-    pub fn simulate(&self) -> Result<Trajectory, ControlError> {
+    pub fn simulate(&self) -> Result<Trajectory, FieldError> {
         let steps = self.check()?;
         let start = self.start.relative_to(&self.goal);
         let backward = match &self.driver {
@@ -386,7 +388,7 @@ impl Run {
     }
 }
 
-fn default_drive() -> Result<DriveModel, ControlError> {
+fn default_drive() -> Result<DriveModel, FieldError> {
     DriveModel::new(&kinolab_wheels::catalogue::robot("differential-drive")?)
 }
 

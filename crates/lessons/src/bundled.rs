@@ -18,7 +18,17 @@ pub fn images() -> &'static [(&'static str, &'static [u8])] {
     files::IMAGES
 }
 
-/// The course built from the embedded lessons.
+/// The course built from the embedded lessons, with every image checked.
 pub fn course() -> Result<Course, LessonError> {
-    Course::from_files(markdown_files().iter().copied())
+    let course = Course::from_files(markdown_files().iter().copied())?;
+    let images: Vec<&str> = images().iter().map(|(path, _)| *path).collect();
+    course.check_images(&images)?;
+    Ok(course)
+}
+
+/// An embedded image's bytes, by its path relative to `lessons/`.
+pub fn image(path: &str) -> Option<&'static [u8]> {
+    images()
+        .iter()
+        .find_map(|(p, bytes)| (*p == path).then_some(*bytes))
 }

@@ -1,6 +1,6 @@
 //! Units and lessons put together into a course, with their addresses.
 
-use crate::document::Block;
+use crate::document::{Block, Span};
 use crate::error::LessonError;
 use crate::front_matter::FrontMatter;
 use crate::parse::{parse_lesson, parse_unit};
@@ -10,6 +10,8 @@ use crate::parse::{parse_lesson, parse_unit};
 pub struct Lesson {
     /// Address part, e.g. `open-and-closed-worlds`.
     pub slug: String,
+    /// The file it was read from, relative to the lessons folder.
+    pub file: String,
     pub meta: FrontMatter,
     pub blocks: Vec<Block>,
 }
@@ -30,9 +32,11 @@ pub struct Course {
     pub units: Vec<Unit>,
 }
 
-/// `02-ways-to-move.md` → `ways-to-move`: drop the ordering number and the
-/// extension.
-fn slug_of(name: &str) -> String {
+/// The one rule that turns a file or folder name into its part of a
+/// lesson's address: `02-ways-to-move.md` → `ways-to-move`,
+/// `01-automation` → `automation` (the ordering number and the extension
+/// go).
+pub fn address_part(name: &str) -> String {
     let stem = name.strip_suffix(".md").unwrap_or(name);
     match stem.split_once('-') {
         Some((number, rest))
@@ -41,6 +45,15 @@ fn slug_of(name: &str) -> String {
             rest.to_owned()
         }
         _ => stem.to_owned(),
+    }
+}
+
+/// Where an image named `url` in the lesson file `lesson_file` lives,
+/// relative to the lessons folder: beside the lesson.
+pub fn image_path(lesson_file: &str, url: &str) -> String {
+    match lesson_file.rsplit_once('/') {
+        Some((folder, _)) => format!("{folder}/{url}"),
+        None => url.to_owned(),
     }
 }
 
@@ -69,7 +82,7 @@ impl Course {
                     "lessons sit directly in a unit folder, not deeper",
                 ));
             }
-            let unit_slug = slug_of(folder);
+            let unit_slug = address_part(folder);
             let unit = match course.units.iter_mut().position(|u| u.slug == unit_slug) {
                 Some(i) => &mut course.units[i],
                 None => {
@@ -89,7 +102,7 @@ impl Course {
                 unit.summary = summary;
             } else {
                 let (meta, blocks) = parse_lesson(path, text)?;
-                let slug = slug_of(name);
+                let slug = address_part(name);
                 if unit.lessons.iter().any(|l| l.slug == slug) {
                     return Err(LessonError::new(
                         path,
@@ -97,7 +110,12 @@ impl Course {
                         format!("two lessons in this unit share the address `{slug}`"),
                     ));
                 }
-                unit.lessons.push(Lesson { slug, meta, blocks });
+                unit.lessons.push(Lesson {
+                    slug,
+                    file: path.to_owned(),
+                    meta,
+                    blocks,
+                });
             }
         }
         if let Some(unit) = course.units.iter().find(|u| u.title.is_empty()) {
@@ -108,6 +126,36 @@ impl Course {
             ));
         }
         Ok(course)
+    }
+
+    /// Check that every image a lesson shows is among `available` (paths
+    /// relative to the lessons folder, like the lessons' own).
+    pub fn check_images(&self, available: &[&str]) -> Result<(), LessonError> {
+        for lesson in self.units.iter().flat_map(|u| &u.lessons) {
+            let mut missing = None;
+            crate::summary::visit(&lesson.blocks, &mut |block| {
+                let spans = match block {
+                    Block::Paragraph(spans) | Block::Heading { text: spans, .. } => spans,
+                    _ => return,
+                };
+                for span in spans {
+                    if let Span::Image { url, line, .. } = span
+                        && missing.is_none()
+                        && !available.contains(&image_path(&lesson.file, url).as_str())
+                    {
+                        missing = Some(LessonError::new(
+                            &lesson.file,
+                            *line,
+                            format!("there is no image `{url}` beside this lesson"),
+                        ));
+                    }
+                }
+            });
+            if let Some(error) = missing {
+                return Err(error);
+            }
+        }
+        Ok(())
     }
 
     /// Find a lesson by its address `unit/lesson`.

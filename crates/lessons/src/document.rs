@@ -19,10 +19,18 @@ pub struct TextStyle {
 /// One piece of inline content.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Span {
-    Text { text: String, style: TextStyle },
+    Text {
+        text: String,
+        style: TextStyle,
+    },
     Code(String),
     Math(Math),
-    Image { url: String, alt: String },
+    /// An image file beside the lesson; `line` is where the lesson names it.
+    Image {
+        url: String,
+        alt: String,
+        line: usize,
+    },
     LineBreak,
 }
 

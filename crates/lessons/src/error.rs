@@ -9,7 +9,7 @@ pub struct LessonError {
 }
 
 impl LessonError {
-    pub(crate) fn new(file: &str, line: usize, message: impl Into<String>) -> Self {
+    pub fn new(file: &str, line: usize, message: impl Into<String>) -> Self {
         Self {
             file: file.to_owned(),
             line,

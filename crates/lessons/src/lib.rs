@@ -12,11 +12,14 @@ mod course;
 mod document;
 mod error;
 mod front_matter;
-pub mod math;
 mod parse;
 mod quiz;
+pub mod summary;
 
-pub use course::{Course, Lesson, Unit};
+/// Formulas, parsed by the formula crate.
+pub use kinolab_formula as math;
+
+pub use course::{Course, Lesson, Unit, address_part, image_path};
 pub use document::{Align, Block, Inline, Span, TextStyle, WidgetSpec, plain_text};
 pub use error::LessonError;
 pub use front_matter::FrontMatter;

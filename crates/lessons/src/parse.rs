@@ -281,6 +281,7 @@ impl<'src> BodyParser<'_, 'src> {
                     spans.push(Span::Image {
                         url: dest_url.to_string(),
                         alt,
+                        line: self.line_of(range.start),
                     });
                     continue;
                 }

@@ -6,10 +6,11 @@
 
 mod error;
 mod gait;
+pub mod report;
 mod stability;
 mod transport;
 
-pub use error::LocomotionError;
+pub use error::FieldError;
 pub use gait::{MAX_LEGS_EXACT, leg_events, leg_events_f64};
 pub use stability::{Point, Stability, static_stability};
 pub use transport::{STANDARD_GRAVITY, cost_of_transport};

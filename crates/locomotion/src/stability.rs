@@ -5,7 +5,7 @@
 //! projects inside that polygon; the *stability margin* is how far the
 //! centre of mass is from the nearest edge.
 
-use crate::error::LocomotionError;
+use crate::error::FieldError;
 
 /// A point on the ground plane, metres.
 pub type Point = [f64; 2];
@@ -26,11 +26,11 @@ pub struct Stability {
     pub nearest: Point,
 }
 
-fn check_point(field: &'static str, p: Point) -> Result<(), LocomotionError> {
+fn check_point(field: &'static str, p: Point) -> Result<(), FieldError> {
     if p.iter().all(|c| c.is_finite()) {
         Ok(())
     } else {
-        Err(LocomotionError::new(
+        Err(FieldError::new(
             field,
             format!("coordinates must be finite, got {p:?}"),
         ))
@@ -89,10 +89,10 @@ fn distance(a: Point, b: Point) -> f64 {
 
 /// Judge the stance of a walker whose feet on the ground are at `feet` and
 /// whose centre of mass projects to `com`.
-pub fn static_stability(com: Point, feet: &[Point]) -> Result<Stability, LocomotionError> {
+pub fn static_stability(com: Point, feet: &[Point]) -> Result<Stability, FieldError> {
     check_point("com", com)?;
     if feet.is_empty() {
-        return Err(LocomotionError::new("feet", "no foot is on the ground"));
+        return Err(FieldError::new("feet", "no foot is on the ground"));
     }
     for &foot in feet {
         check_point("feet", foot)?;

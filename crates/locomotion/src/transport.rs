@@ -1,6 +1,6 @@
 //! Cost of transport: energy per unit weight per unit distance.
 
-use crate::error::LocomotionError;
+use crate::error::FieldError;
 
 /// Standard gravity, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.806_65;
@@ -14,15 +14,15 @@ pub fn cost_of_transport(
     mass: f64,
     distance: f64,
     gravity: f64,
-) -> Result<f64, LocomotionError> {
+) -> Result<f64, FieldError> {
     if !(energy.is_finite() && energy >= 0.0) {
-        return Err(LocomotionError::new(
+        return Err(FieldError::new(
             "energy",
             format!("must be a finite number ≥ 0, got {energy}"),
         ));
     }
-    let mass = LocomotionError::check_positive("mass", mass)?;
-    let distance = LocomotionError::check_positive("distance", distance)?;
-    let gravity = LocomotionError::check_positive("gravity", gravity)?;
+    let mass = kinolab_common::error::positive("mass", mass)?;
+    let distance = kinolab_common::error::positive("distance", distance)?;
+    let gravity = kinolab_common::error::positive("gravity", gravity)?;
     Ok(energy / (mass * gravity * distance))
 }

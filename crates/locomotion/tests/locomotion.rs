@@ -128,25 +128,57 @@ fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     ((p[0] - qx).powi(2) + (p[1] - qy).powi(2)).sqrt()
 }
 
+fn cross(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+}
+
+/// The static stability margin by brute force, without computing a hull:
+/// every pair of feet whose line has all feet on one side bounds the
+/// support polygon; the CoM is inside when it is on the feet's side of
+/// every such line; the margin is ± its distance to the nearest of them.
+fn brute_force_margin(com: [f64; 2], feet: &[[f64; 2]]) -> f64 {
+    let mut nearest = f64::INFINITY;
+    let mut inside = true;
+    for (i, &a) in feet.iter().enumerate() {
+        for &b in &feet[i + 1..] {
+            if a == b {
+                continue;
+            }
+            let sides: Vec<f64> = feet.iter().map(|&p| cross(a, b, p)).collect();
+            let tol = 1e-12;
+            let all_left = sides.iter().all(|&v| v >= -tol);
+            let all_right = sides.iter().all(|&v| v <= tol);
+            if !(all_left || all_right) {
+                continue;
+            }
+            let c = cross(a, b, com);
+            if (all_left && c < 0.0) || (all_right && c > 0.0) {
+                inside = false;
+            }
+            nearest = nearest.min(segment_distance(com, a, b));
+        }
+    }
+    if inside { nearest } else { -nearest }
+}
+
 proptest! {
     #[test]
-    fn margin_matches_brute_force_edge_distances(
+    fn margin_matches_a_brute_force_over_foot_pairs(
         feet in prop::collection::vec((-2.0f64..2.0, -2.0f64..2.0), 3..8),
         com in (-3.0f64..3.0, -3.0f64..3.0),
     ) {
         let feet: Vec<[f64; 2]> = feet.into_iter().map(|(x, y)| [x, y]).collect();
         let com = [com.0, com.1];
+        // Only feet that enclose an area (three not in a line).
+        let area = feet.iter().enumerate().any(|(i, &a)| {
+            feet[i + 1..].iter().enumerate().any(|(j, &b)| {
+                feet[i + j + 2..].iter().any(|&c| cross(a, b, c).abs() > 1e-6)
+            })
+        });
+        prop_assume!(area);
         let s = static_stability(com, &feet).unwrap();
-        prop_assume!(s.polygon.len() >= 3);
-        let n = s.polygon.len();
-        let nearest_edge = (0..n)
-            .map(|i| segment_distance(com, s.polygon[i], s.polygon[(i + 1) % n]))
-            .fold(f64::INFINITY, f64::min);
-        prop_assert!((s.margin.abs() - nearest_edge).abs() < 1e-9);
-        // Every foot lies inside or on the support polygon.
-        for foot in &feet {
-            let inside = static_stability(*foot, &feet).unwrap();
-            prop_assert!(inside.margin >= -1e-9);
-        }
+        let expected = brute_force_margin(com, &feet);
+        prop_assert!((s.margin - expected).abs() < 1e-9, "{} vs {}", s.margin, expected);
+        prop_assert_eq!(s.stable, expected > 0.0);
     }
 }

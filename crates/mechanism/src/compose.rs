@@ -13,7 +13,7 @@
 
 use nalgebra::Vector3;
 
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::ik::{Goal, Options, Target};
 use crate::model::{FrameRef, Model, ModelBuilder, Pose};
 
@@ -197,36 +197,33 @@ impl ModelBuilder {
     }
 }
 
-fn joint_variable(model: &Model, field: &str, name: &str) -> Result<usize, MechanismError> {
+fn joint_variable(model: &Model, field: &str, name: &str) -> Result<usize, FieldError> {
     match model.joints.iter().position(|j| j.name == name) {
-        None => Err(MechanismError::new(
-            field,
-            format!("no joint named `{name}`"),
-        )),
+        None => Err(FieldError::new(field, format!("no joint named `{name}`"))),
         Some(j) => model.variable_of[j]
-            .ok_or_else(|| MechanismError::new(field, format!("joint `{name}` is fixed"))),
+            .ok_or_else(|| FieldError::new(field, format!("joint `{name}` is fixed"))),
     }
 }
 
 pub(crate) fn resolve_couplings(
     model: &Model,
     pending: &[PendingCoupling],
-) -> Result<Vec<Coupling>, MechanismError> {
+) -> Result<Vec<Coupling>, FieldError> {
     let mut out: Vec<Coupling> = Vec::new();
     for (i, c) in pending.iter().enumerate() {
         let field = |f: &str| format!("couplings[{i}].{f}");
         let follower = joint_variable(model, &field("follower"), &c.follower)?;
         let leader = joint_variable(model, &field("leader"), &c.leader)?;
-        crate::error::finite(&field("ratio"), c.ratio)?;
-        crate::error::finite(&field("offset"), c.offset)?;
+        crate::error::finite(field("ratio"), c.ratio)?;
+        crate::error::finite(field("offset"), c.offset)?;
         if follower == leader {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 field("leader"),
                 "a joint cannot follow itself",
             ));
         }
         if out.iter().any(|o| o.follower == follower) {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 field("follower"),
                 format!("`{}` already follows another joint", c.follower),
             ));
@@ -240,7 +237,7 @@ pub(crate) fn resolve_couplings(
     }
     for (i, c) in out.iter().enumerate() {
         if out.iter().any(|o| o.follower == c.leader) {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 format!("couplings[{i}].leader"),
                 "the leader follows another joint itself; couple both to the first",
             ));
@@ -252,14 +249,14 @@ pub(crate) fn resolve_couplings(
 pub(crate) fn resolve_loops(
     model: &Model,
     pending: &[PendingLoop],
-) -> Result<Vec<LoopClosure>, MechanismError> {
+) -> Result<Vec<LoopClosure>, FieldError> {
     let mut out = Vec::new();
     for (i, l) in pending.iter().enumerate() {
         let field = |f: &str| format!("loops[{i}].{f}");
         let frame = |f: &str, name: &str| {
             model
                 .frame(name)
-                .map_err(|e| MechanismError::new(field(f), e.message))
+                .map_err(|e| FieldError::new(field(f), e.message))
         };
         let passive = l
             .passive
@@ -268,7 +265,7 @@ pub(crate) fn resolve_loops(
             .map(|(k, p)| {
                 let v = joint_variable(model, &field(&format!("passive[{k}]")), p)?;
                 if model.couplings.iter().any(|c| c.follower == v) {
-                    return Err(MechanismError::new(
+                    return Err(FieldError::new(
                         field(&format!("passive[{k}]")),
                         format!("`{p}` follows a coupling and cannot also close a loop"),
                     ));
@@ -277,7 +274,7 @@ pub(crate) fn resolve_loops(
             })
             .collect::<Result<Vec<_>, _>>()?;
         if passive.is_empty() {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 field("passive"),
                 "name the joints that close the loop",
             ));
@@ -365,7 +362,7 @@ impl Model {
     }
 
     /// How well `q` closes every loop (within 1e-9 m and rad counts as closed).
-    pub fn closure(&self, q: &[f64]) -> Result<Closure, MechanismError> {
+    pub fn closure(&self, q: &[f64]) -> Result<Closure, FieldError> {
         self.check_state(q)?;
         let (mut gap, mut twist): (f64, f64) = (0.0, 0.0);
         for l in &self.loops {
@@ -382,11 +379,19 @@ impl Model {
         })
     }
 
+    /// The zero state (clamped into the limits) with couplings applied and
+    /// loops closed: where the lab, the command line and the JS API start.
+    pub fn home_state(&self) -> Result<Vec<f64>, FieldError> {
+        let mut q = self.zero_state();
+        self.close_loops(&mut q)?;
+        Ok(q)
+    }
+
     /// Move the passive joints so every loop closes, keeping the driven
     /// ones; couplings are applied first. Returns how well it worked: a
     /// linkage that cannot close at these driven values (a four-bar crank
     /// past its dead point) keeps the nearest configuration found.
-    pub fn close_loops(&self, q: &mut [f64]) -> Result<Closure, MechanismError> {
+    pub fn close_loops(&self, q: &mut [f64]) -> Result<Closure, FieldError> {
         self.check_state(q)?;
         self.apply_couplings(q);
         if self.loops.is_empty() {

@@ -11,7 +11,7 @@
 use nalgebra::{Translation3, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
-use crate::error::{MechanismError, finite};
+use crate::error::{FieldError, finite};
 use crate::model::{JointKind, Model, ModelBuilder, Pose};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -61,7 +61,7 @@ pub fn chain(
     rows: &[DhRow],
     base: Pose,
     tool: Pose,
-) -> Result<Model, MechanismError> {
+) -> Result<Model, FieldError> {
     chain_builder(name, convention, rows, base, tool)?.build()
 }
 
@@ -73,7 +73,7 @@ pub fn chain_builder(
     rows: &[DhRow],
     base: Pose,
     tool: Pose,
-) -> Result<ModelBuilder, MechanismError> {
+) -> Result<ModelBuilder, FieldError> {
     let mut b = ModelBuilder::new(name);
     let mut parent = b.fixed_base(base);
     for (i, r) in rows.iter().enumerate() {
@@ -84,10 +84,10 @@ pub fn chain_builder(
             ("theta", r.theta),
             ("offset", r.offset),
         ] {
-            finite(&format!("joints[{i}].{field}"), v)?;
+            finite(format!("joints[{i}].{field}"), v)?;
         }
         if r.kind == JointKind::Fixed {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 format!("joints[{i}].type"),
                 "a DH row must be revolute, continuous or prismatic",
             ));

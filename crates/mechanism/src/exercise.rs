@@ -4,21 +4,16 @@
 use nalgebra::{DMatrix, Vector3};
 
 use crate::dh::{Convention, link};
-use crate::error::MechanismError;
-use crate::model::{FrameRef, Model};
+use kinolab_common::Feedback;
 
-/// The outcome of a check.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Verdict {
-    pub met: bool,
-    pub message: String,
-}
+use crate::error::FieldError;
+use crate::model::{FrameRef, Model};
 
 /// The Jacobian rows that matter for a mechanism's task: the rows that
 /// move at all (at a generic state), positions first, at most one per
 /// joint. A planar 2R keeps ẋ and ẏ; a planar 3R adds the turn; a
 /// six-joint arm keeps all six.
-pub fn task_rows(model: &Model, frame: &FrameRef) -> Result<Vec<usize>, MechanismError> {
+pub fn task_rows(model: &Model, frame: &FrameRef) -> Result<Vec<usize>, FieldError> {
     let mut q = model.zero_state();
     for (i, v) in q.iter_mut().enumerate() {
         *v += 0.3 + 0.1 * i as f64;
@@ -34,7 +29,7 @@ pub fn task_rows(model: &Model, frame: &FrameRef) -> Result<Vec<usize>, Mechanis
 
 /// How close `q` is to a singularity: the smallest singular value of the
 /// task rows of the Jacobian divided by the largest (0 when singular).
-pub fn conditioning(model: &Model, q: &[f64], frame: &FrameRef) -> Result<f64, MechanismError> {
+pub fn conditioning(model: &Model, q: &[f64], frame: &FrameRef) -> Result<f64, FieldError> {
     let rows = task_rows(model, frame)?;
     let full = model.jacobian(q, frame)?;
     let jac = DMatrix::from_fn(rows.len(), full.ncols(), |r, c| full[(rows[r], c)]);
@@ -90,14 +85,14 @@ impl Task {
     }
 
     /// Check a state against a `Reach` task.
-    pub fn check_state(&self, model: &Model, q: &[f64]) -> Result<Verdict, MechanismError> {
+    pub fn check_state(&self, model: &Model, q: &[f64]) -> Result<Feedback, FieldError> {
         let Task::Reach {
             frame,
             target,
             tolerance,
         } = self
         else {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 "task",
                 "this task is not checked on a state",
             ));
@@ -105,7 +100,7 @@ impl Task {
         let at = model.pose(q, &model.frame(frame)?)?.translation.vector;
         let off = (at - target).norm();
         Ok(if off <= *tolerance {
-            Verdict {
+            Feedback {
                 met: true,
                 message: format!(
                     "Reached: the tool is {:.1} mm from the target.",
@@ -114,7 +109,7 @@ impl Task {
             }
         } else {
             let d = target - at;
-            Verdict {
+            Feedback {
                 met: false,
                 message: format!(
                     "Not yet: {:.0} mm away (still to go: x {:+.2}, y {:+.2}, z {:+.2} m).",
@@ -128,20 +123,30 @@ impl Task {
     }
 
     /// Check the ticks of a `SpotSingular` task.
-    pub fn check_marks(&self, model: &Model, marks: &[bool]) -> Result<Verdict, MechanismError> {
+    pub fn check_marks(&self, model: &Model, marks: &[bool]) -> Result<Feedback, FieldError> {
         let Task::SpotSingular { frame, sets } = self else {
-            return Err(MechanismError::new("task", "this task has no ticks"));
+            return Err(FieldError::new("task", "this task has no ticks"));
         };
+        if marks.len() != sets.len() {
+            return Err(FieldError::new(
+                "marks",
+                format!(
+                    "expected {} ticks, one per set, got {}",
+                    sets.len(),
+                    marks.len()
+                ),
+            ));
+        }
         let f = model.frame(frame)?;
         let mut wrong = Vec::new();
-        for (i, q) in sets.iter().enumerate() {
+        for (i, (q, &marked)) in sets.iter().zip(marks).enumerate() {
             let singular = conditioning(model, q, &f)? < SINGULAR;
-            if marks.get(i).copied().unwrap_or(false) != singular {
+            if marked != singular {
                 wrong.push((i + 1, singular));
             }
         }
         Ok(if wrong.is_empty() {
-            Verdict {
+            Feedback {
                 met: true,
                 message: "Right: exactly those configurations lose a direction of motion.".into(),
             }
@@ -156,7 +161,7 @@ impl Task {
                     }
                 })
                 .collect();
-            Verdict {
+            Feedback {
                 met: false,
                 message: format!(
                     "Not quite: {}. Look for joints lined up so that two of them move the tool the same way.",
@@ -168,9 +173,9 @@ impl Task {
 
     /// Check a DH row against a `DhRow` task: the transforms must match
     /// (any row giving the same frame counts).
-    pub fn check_row(&self, row: [f64; 4]) -> Result<Verdict, MechanismError> {
+    pub fn check_row(&self, row: [f64; 4]) -> Result<Feedback, FieldError> {
         let Task::DhRow { convention, target } = self else {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 "task",
                 "this task is not checked on a DH row",
             ));
@@ -180,7 +185,7 @@ impl Task {
         let shift = (want.translation.vector - got.translation.vector).norm();
         let turn = want.rotation.angle_to(&got.rotation);
         Ok(if shift < 5e-3 && turn < 0.5f64.to_radians() {
-            Verdict {
+            Feedback {
                 met: true,
                 message: "Right: your row puts frame i exactly on the target.".into(),
             }
@@ -195,7 +200,7 @@ impl Task {
                     turn.to_degrees()
                 ));
             }
-            Verdict {
+            Feedback {
                 met: false,
                 message: format!("Not yet: {}.", parts.join(" and ")),
             }

@@ -18,7 +18,7 @@ use nalgebra::{Translation3, Unit, UnitQuaternion, Vector3};
 use serde::Deserialize;
 
 use crate::dh::{Convention, DhRow, chain_builder};
-use crate::error::{MechanismError, finite};
+use crate::error::{FieldError, finite};
 use crate::model::{JointKind, Model, ModelBuilder, Pose};
 
 /// How a file describes its joints.
@@ -48,7 +48,7 @@ struct PoseFile {
 }
 
 impl PoseFile {
-    fn pose(&self, field: &str) -> Result<Pose, MechanismError> {
+    fn pose(&self, field: &str) -> Result<Pose, FieldError> {
         for v in self.xyz.iter().chain(&self.rpy_deg) {
             finite(field, *v)?;
         }
@@ -192,16 +192,16 @@ pub const CONTRACT_EXAMPLE: &str = r#"{
 }"#;
 
 /// A 4×4 homogeneous matrix as a pose; it must be a rotation and a shift.
-pub fn pose_from_matrix(field: &str, m: &[[f64; 4]; 4]) -> Result<Pose, MechanismError> {
+pub fn pose_from_matrix(field: &str, m: &[[f64; 4]; 4]) -> Result<Pose, FieldError> {
     use nalgebra::{Matrix3, Rotation3, Translation3, UnitQuaternion};
     if m.iter().flatten().any(|v| !v.is_finite()) {
-        return Err(MechanismError::new(field, "must be finite numbers"));
+        return Err(FieldError::new(field, "must be finite numbers"));
     }
     let r = Matrix3::from_fn(|i, j| m[i][j]);
     let orthogonal =
         (r.transpose() * r - Matrix3::identity()).norm() < 1e-6 && r.determinant() > 0.0;
     if !orthogonal || m[3] != [0.0, 0.0, 0.0, 1.0] {
-        return Err(MechanismError::new(
+        return Err(FieldError::new(
             field,
             "must be a rigid transform: a rotation (orthonormal, determinant 1) and a translation, last row 0 0 0 1",
         ));
@@ -219,7 +219,7 @@ pub fn matrix_of(p: &Pose) -> [[f64; 4]; 4] {
     std::array::from_fn(|i| std::array::from_fn(|j| h[(i, j)]))
 }
 
-fn parse(text: &str) -> Result<ModelFile, MechanismError> {
+fn parse(text: &str) -> Result<ModelFile, FieldError> {
     let mut de = serde_json::Deserializer::from_str(text);
     serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
@@ -229,15 +229,15 @@ fn parse(text: &str) -> Result<ModelFile, MechanismError> {
             .next()
             .unwrap_or(&message)
             .to_string();
-        MechanismError::new(if path == "." { String::new() } else { path }, message)
+        FieldError::new(if path == "." { String::new() } else { path }, message)
     })
 }
 
 /// Parse a model file. Mounted sub-mechanisms may only come from the
 /// catalogue (`catalogue:<id>`); see [`from_json_with`] for files.
-pub fn from_json(text: &str) -> Result<Model, MechanismError> {
+pub fn from_json(text: &str) -> Result<Model, FieldError> {
     from_json_with(text, &mut |name: &str| {
-        Err(MechanismError::new(
+        Err(FieldError::new(
             "",
             format!("cannot open `{name}` here; use `catalogue:<id>`"),
         ))
@@ -249,11 +249,11 @@ pub fn from_json(text: &str) -> Result<Model, MechanismError> {
 /// always works.
 pub fn from_json_with(
     text: &str,
-    resolve: &mut dyn FnMut(&str) -> Result<Model, MechanismError>,
-) -> Result<Model, MechanismError> {
+    resolve: &mut dyn FnMut(&str) -> Result<Model, FieldError>,
+) -> Result<Model, FieldError> {
     let file = parse(text)?;
     if file.joints.is_empty() && file.mounts.is_empty() {
-        return Err(MechanismError::new(
+        return Err(FieldError::new(
             "joints",
             "a model needs at least one joint or mount",
         ));
@@ -288,9 +288,9 @@ pub fn from_json_with(
             Some(id) => crate::catalogue::mechanism(id),
             None => resolve(&m.model),
         }
-        .map_err(|e| MechanismError::new(format!("{field}.model"), e.to_string()))?;
+        .map_err(|e| FieldError::new(format!("{field}.model"), e.to_string()))?;
         let Some(port) = b.frames.iter().find(|f| f.name == m.at) else {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 format!("{field}.at"),
                 format!("no frame named `{}` to mount on", m.at),
             ));
@@ -317,25 +317,25 @@ pub fn from_json_with(
     b.build()
 }
 
-fn body_index(b: &ModelBuilder, name: &str, field: &str) -> Result<usize, MechanismError> {
+fn body_index(b: &ModelBuilder, name: &str, field: &str) -> Result<usize, FieldError> {
     b.bodies
         .iter()
         .position(|x| x.name == name)
-        .ok_or_else(|| MechanismError::new(field, format!("no body named `{name}`")))
+        .ok_or_else(|| FieldError::new(field, format!("no body named `{name}`")))
 }
 
 /// A joint's limits in radians or metres.
-fn limits(i: usize, j: &JointFile) -> Result<Option<[f64; 2]>, MechanismError> {
+fn limits(i: usize, j: &JointFile) -> Result<Option<[f64; 2]>, FieldError> {
     let prismatic = j.kind == JointKind::Prismatic;
     match (prismatic, j.limits_deg, j.limits) {
         (false, Some([lo, hi]), None) => Ok(Some([lo.to_radians(), hi.to_radians()])),
         (true, None, Some(l)) => Ok(Some(l)),
         (_, None, None) => Ok(None),
-        (false, _, Some(_)) => Err(MechanismError::new(
+        (false, _, Some(_)) => Err(FieldError::new(
             format!("joints[{i}].limits"),
             "a revolute joint's limits are `limits_deg`",
         )),
-        (true, Some(_), _) => Err(MechanismError::new(
+        (true, Some(_), _) => Err(FieldError::new(
             format!("joints[{i}].limits_deg"),
             "a prismatic joint's limits are `limits` in metres",
         )),
@@ -351,9 +351,9 @@ fn offset(j: &JointFile) -> f64 {
 }
 
 /// Refuse a field that the description does not use.
-fn unused(i: usize, present: &[(&str, bool)], description: &str) -> Result<(), MechanismError> {
+fn unused(i: usize, present: &[(&str, bool)], description: &str) -> Result<(), FieldError> {
     match present.iter().find(|(_, here)| *here) {
-        Some((name, _)) => Err(MechanismError::new(
+        Some((name, _)) => Err(FieldError::new(
             format!("joints[{i}].{name}"),
             format!("not part of a {description} description"),
         )),
@@ -361,7 +361,7 @@ fn unused(i: usize, present: &[(&str, bool)], description: &str) -> Result<(), M
     }
 }
 
-fn dh_rows(joints: &[JointFile]) -> Result<Vec<DhRow>, MechanismError> {
+fn dh_rows(joints: &[JointFile]) -> Result<Vec<DhRow>, FieldError> {
     let mut rows = Vec::with_capacity(joints.len());
     for (i, j) in joints.iter().enumerate() {
         unused(
@@ -388,16 +388,16 @@ fn dh_rows(joints: &[JointFile]) -> Result<Vec<DhRow>, MechanismError> {
     Ok(rows)
 }
 
-fn unit_axis(field: &str, v: [f64; 3]) -> Result<Unit<Vector3<f64>>, MechanismError> {
+fn unit_axis(field: &str, v: [f64; 3]) -> Result<Unit<Vector3<f64>>, FieldError> {
     for x in v {
         finite(field, x)?;
     }
     Unit::try_new(Vector3::from(v), 1e-9)
-        .ok_or_else(|| MechanismError::new(field, "an axis cannot be zero"))
+        .ok_or_else(|| FieldError::new(field, "an axis cannot be zero"))
 }
 
 /// Transforms and zero-position descriptions: a tree hung from `base`.
-fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
+fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, FieldError> {
     let zero_position = file.convention == Description::ZeroPosition;
     let mut b = ModelBuilder::new(file.name.clone());
     // A `base` body only when the file places one.
@@ -431,7 +431,7 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, MechanismError> {
             let point = match j.point {
                 Some(p) => {
                     for v in p {
-                        finite(&field("point"), v)?;
+                        finite(field("point"), v)?;
                     }
                     Vector3::from(p)
                 }

@@ -10,7 +10,7 @@
 
 use nalgebra::{DMatrix, DVector, UnitQuaternion, Vector3};
 
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::model::{FrameRef, Model, Pose};
 
 /// What one frame should achieve.
@@ -509,7 +509,7 @@ impl Model {
         goals: &[Goal],
         seed: &[f64],
         options: &Options,
-    ) -> Result<Solution, MechanismError> {
+    ) -> Result<Solution, FieldError> {
         self.check_state(seed)?;
         for command in &self.commands.0 {
             if let Some(q) = command.solve(self, goals, seed)
@@ -538,7 +538,7 @@ impl Model {
         goals: &[Goal],
         seed: &[f64],
         options: &Options,
-    ) -> Result<Solution, MechanismError> {
+    ) -> Result<Solution, FieldError> {
         let movable: Vec<bool> = (0..self.dof()).map(|v| !self.is_follower(v)).collect();
         self.solve_masked(goals, seed, options, &movable)
     }
@@ -550,13 +550,13 @@ impl Model {
         seed: &[f64],
         options: &Options,
         movable: &[bool],
-    ) -> Result<Solution, MechanismError> {
+    ) -> Result<Solution, FieldError> {
         self.check_state(seed)?;
         let mut all = goals.to_vec();
         all.extend(self.loop_goals());
         let goals = &all[..];
         if goals.is_empty() {
-            return Err(MechanismError::new("goals", "give at least one target"));
+            return Err(FieldError::new("goals", "give at least one target"));
         }
         for g in goals {
             let finite = match &g.target {
@@ -570,7 +570,7 @@ impl Model {
                 Target::Orientation(r) => r.coords.iter().all(|v| v.is_finite()),
             };
             if !finite {
-                return Err(MechanismError::new("target", "must be finite numbers"));
+                return Err(FieldError::new("target", "must be finite numbers"));
             }
         }
         let m: usize = goals.iter().map(rows).sum();
@@ -619,7 +619,7 @@ impl Model {
             });
         }
         let Some((q, r)) = best else {
-            return Err(MechanismError::new("goals", "no attempt was made"));
+            return Err(FieldError::new("goals", "no attempt was made"));
         };
         Ok(Solution {
             converged: options.done(&r),

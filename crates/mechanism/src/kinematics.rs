@@ -2,7 +2,7 @@
 
 use nalgebra::DMatrix;
 
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::model::{FrameRef, Model, Pose};
 
 /// Where everything is for one state: each body's frame and each joint's
@@ -21,7 +21,7 @@ impl Model {
     }
 
     /// Every body's and joint's frame in the world.
-    pub fn place(&self, q: &[f64]) -> Result<Placement, MechanismError> {
+    pub fn place(&self, q: &[f64]) -> Result<Placement, FieldError> {
         self.check_state(q)?;
         let mut bodies = vec![Pose::identity(); self.bodies.len()];
         let mut joints = Vec::with_capacity(self.joints.len());
@@ -66,7 +66,7 @@ impl Model {
 
     /// One frame in the world, walking only the joints above it (or from
     /// a plugged-in closed form, when one knows this frame).
-    pub fn pose(&self, q: &[f64], frame: &FrameRef) -> Result<Pose, MechanismError> {
+    pub fn pose(&self, q: &[f64], frame: &FrameRef) -> Result<Pose, FieldError> {
         self.check_state(q)?;
         Ok(self
             .pose_by_command(q, frame)
@@ -75,7 +75,7 @@ impl Model {
 
     /// [`Model::pose`] by walking the tree, never by a plugged-in command:
     /// the reference the closed forms are checked against.
-    pub fn pose_generic(&self, q: &[f64], frame: &FrameRef) -> Result<Pose, MechanismError> {
+    pub fn pose_generic(&self, q: &[f64], frame: &FrameRef) -> Result<Pose, FieldError> {
         self.check_state(q)?;
         Ok(self.pose_unchecked(q, frame))
     }
@@ -95,19 +95,14 @@ impl Model {
     }
 
     /// The pose of `to` seen from `from`: from⁻¹ · to.
-    pub fn relative(
-        &self,
-        q: &[f64],
-        from: &FrameRef,
-        to: &FrameRef,
-    ) -> Result<Pose, MechanismError> {
+    pub fn relative(&self, q: &[f64], from: &FrameRef, to: &FrameRef) -> Result<Pose, FieldError> {
         Ok(self.pose(q, from)?.inverse() * self.pose(q, to)?)
     }
 
     /// The geometric Jacobian of `frame` (6 × dof): rows are the linear
     /// then the angular velocity of the frame in the world, columns the
     /// joint variables. Joints not above the frame give zero columns.
-    pub fn jacobian(&self, q: &[f64], frame: &FrameRef) -> Result<DMatrix<f64>, MechanismError> {
+    pub fn jacobian(&self, q: &[f64], frame: &FrameRef) -> Result<DMatrix<f64>, FieldError> {
         self.check_state(q)?;
         let mut jac = DMatrix::zeros(6, self.dof());
         // One walk gives both the frame's point and the joints' axes.

@@ -32,9 +32,9 @@ mod shapes;
 pub mod special;
 
 pub use compose::{Closure, Coupling, Group, LoopClosure};
-pub use error::MechanismError;
+pub use error::FieldError;
 pub use ik::{Goal, Options, Solution, Target};
 pub use kinematics::Placement;
 pub use model::{Body, Frame, FrameRef, Joint, JointKind, Model, ModelBuilder, Pose, WORLD};
-pub use nalgebra::{UnitQuaternion, Vector3};
+pub use nalgebra::{Matrix4, UnitQuaternion, Vector3};
 pub use shapes::{Collisions, Obstacle, Part, Plane, Shape};

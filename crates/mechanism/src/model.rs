@@ -7,7 +7,7 @@ use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
 use crate::compose::{Coupling, Group, LoopClosure, PendingCoupling, PendingLoop};
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::shapes::Shape;
 
 /// A rigid transform: rotation and translation.
@@ -202,12 +202,12 @@ impl ModelBuilder {
     }
 
     /// Check the tree and order it for traversal.
-    pub fn build(self) -> Result<Model, MechanismError> {
+    pub fn build(self) -> Result<Model, FieldError> {
         let n = self.bodies.len();
         let mut names = std::collections::HashSet::new();
         for (i, b) in self.bodies.iter().enumerate() {
             if !names.insert(b.name.as_str()) {
-                return Err(MechanismError::new(
+                return Err(FieldError::new(
                     format!("bodies[{i}].name"),
                     format!("`{}` is used twice", b.name),
                 ));
@@ -215,13 +215,10 @@ impl ModelBuilder {
         }
         for (i, f) in self.frames.iter().enumerate() {
             if f.body >= n {
-                return Err(MechanismError::new(
-                    format!("frames[{i}].body"),
-                    "no such body",
-                ));
+                return Err(FieldError::new(format!("frames[{i}].body"), "no such body"));
             }
             if !names.insert(f.name.as_str()) {
-                return Err(MechanismError::new(
+                return Err(FieldError::new(
                     format!("frames[{i}].name"),
                     format!("`{}` is used twice", f.name),
                 ));
@@ -231,13 +228,13 @@ impl ModelBuilder {
         for (i, j) in self.joints.iter().enumerate() {
             let field = |f: &str| format!("joints[{i}].{f}");
             if j.parent >= n || j.child >= n || j.child == 0 {
-                return Err(MechanismError::new(
+                return Err(FieldError::new(
                     field("parent"),
                     "joins a body that does not exist",
                 ));
             }
             if parent_joint[j.child].replace(i).is_some() {
-                return Err(MechanismError::new(
+                return Err(FieldError::new(
                     field("child"),
                     format!(
                         "body `{}` already hangs from another joint",
@@ -248,7 +245,7 @@ impl ModelBuilder {
             if let Some([lo, hi]) = j.limits
                 && !(lo.is_finite() && hi.is_finite() && lo <= hi)
             {
-                return Err(MechanismError::new(
+                return Err(FieldError::new(
                     field("limits"),
                     format!("need lower ≤ upper, got [{lo}, {hi}]"),
                 ));
@@ -263,10 +260,7 @@ impl ModelBuilder {
                 .chain([j.offset].iter())
                 .any(|v| !v.is_finite())
             {
-                return Err(MechanismError::new(
-                    field("origin"),
-                    "must be finite numbers",
-                ));
+                return Err(FieldError::new(field("origin"), "must be finite numbers"));
             }
         }
         // Chains from the world: follow parents up; a cycle never reaches 0.
@@ -275,13 +269,13 @@ impl ModelBuilder {
             let mut at = b;
             while at != 0 {
                 let Some(j) = parent_joint[at] else {
-                    return Err(MechanismError::new(
+                    return Err(FieldError::new(
                         format!("bodies[{b}]"),
                         format!("`{}` is not connected to the world", self.bodies[b].name),
                     ));
                 };
                 if chain.len() > self.joints.len() {
-                    return Err(MechanismError::new(
+                    return Err(FieldError::new(
                         format!("bodies[{b}]"),
                         "the joints form a loop",
                     ));
@@ -314,7 +308,7 @@ impl ModelBuilder {
         }
         for (i, &(a, b)) in self.ignored.iter().enumerate() {
             if a >= n || b >= n {
-                return Err(MechanismError::new(
+                return Err(FieldError::new(
                     format!("ignore[{i}]"),
                     "names a body that does not exist",
                 ));
@@ -378,7 +372,7 @@ impl Model {
     }
 
     /// A frame by name: a body's own frame, or a named frame.
-    pub fn frame(&self, name: &str) -> Result<FrameRef, MechanismError> {
+    pub fn frame(&self, name: &str) -> Result<FrameRef, FieldError> {
         if let Some(b) = self.bodies.iter().position(|b| b.name == name) {
             return Ok(FrameRef {
                 body: b,
@@ -393,7 +387,7 @@ impl Model {
         }
         let mut known: Vec<&str> = self.bodies.iter().map(|b| b.name.as_str()).collect();
         known.extend(self.frames.iter().map(|f| f.name.as_str()));
-        Err(MechanismError::new(
+        Err(FieldError::new(
             "frame",
             format!("no frame named `{name}` (known: {})", known.join(", ")),
         ))
@@ -421,9 +415,9 @@ impl Model {
     }
 
     /// Check a state's length and numbers.
-    pub fn check_state(&self, q: &[f64]) -> Result<(), MechanismError> {
+    pub fn check_state(&self, q: &[f64]) -> Result<(), FieldError> {
         if q.len() != self.dof() {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 "q",
                 format!(
                     "`{}` has {} joint variables, got {} values",
@@ -435,7 +429,7 @@ impl Model {
         }
         // The field name is only written out when something is wrong.
         if let Some(i) = q.iter().position(|v| !v.is_finite()) {
-            crate::error::finite(&format!("q[{i}]"), q[i])?;
+            crate::error::finite(format!("q[{i}]"), q[i])?;
         }
         Ok(())
     }

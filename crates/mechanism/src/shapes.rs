@@ -14,7 +14,7 @@ use parry2d_f64::math::{Pose as Pose2, Vector as V2};
 use parry2d_f64::query;
 use parry2d_f64::shape::{Ball, Capsule, Cuboid, Shape as ParryShape};
 
-use crate::error::{MechanismError, finite};
+use crate::error::{FieldError, finite};
 use crate::model::Model;
 
 /// A capsule on a body: the segment `a`–`b` (body frame, m) swollen by
@@ -28,15 +28,15 @@ pub struct Shape {
 }
 
 impl Shape {
-    pub(crate) fn check(&self, field: &str, bodies: usize) -> Result<(), MechanismError> {
+    pub(crate) fn check(&self, field: &str, bodies: usize) -> Result<(), FieldError> {
         if self.body >= bodies {
-            return Err(MechanismError::new(format!("{field}.body"), "no such body"));
+            return Err(FieldError::new(format!("{field}.body"), "no such body"));
         }
         for v in self.a.iter().chain(self.b.iter()) {
-            finite(&format!("{field}.a"), *v)?;
+            finite(format!("{field}.a"), *v)?;
         }
         if !(self.radius.is_finite() && self.radius > 0.0) {
-            return Err(MechanismError::new(
+            return Err(FieldError::new(
                 format!("{field}.radius"),
                 format!("must be a positive number of metres, got {}", self.radius),
             ));
@@ -78,7 +78,7 @@ pub enum Obstacle {
 }
 
 impl Obstacle {
-    fn check(&self, i: usize) -> Result<(), MechanismError> {
+    fn check(&self, i: usize) -> Result<(), FieldError> {
         let field = format!("obstacles[{i}]");
         let (numbers, sizes): (Vec<f64>, Vec<f64>) = match self {
             Obstacle::Circle { center, radius } => (center.to_vec(), vec![*radius]),
@@ -88,7 +88,7 @@ impl Obstacle {
             finite(&field, v)?;
         }
         if sizes.iter().any(|s| !(s.is_finite() && *s > 0.0)) {
-            return Err(MechanismError::new(field, "sizes must be positive"));
+            return Err(FieldError::new(field, "sizes must be positive"));
         }
         Ok(())
     }
@@ -107,7 +107,7 @@ impl Obstacle {
     }
 }
 
-fn check_all(obstacles: &[Obstacle]) -> Result<(), MechanismError> {
+fn check_all(obstacles: &[Obstacle]) -> Result<(), FieldError> {
     for (i, o) in obstacles.iter().enumerate() {
         o.check(i)?;
     }
@@ -175,7 +175,7 @@ impl Model {
         &self,
         q: &[f64],
         plane: Plane,
-    ) -> Result<(Vec<Node>, Option<usize>), MechanismError> {
+    ) -> Result<(Vec<Node>, Option<usize>), FieldError> {
         let placed = self.place(q)?;
         let mut nodes: Vec<Node> = Vec::new();
         // Leaves under body nodes.
@@ -294,7 +294,7 @@ impl Model {
         q: &[f64],
         plane: Plane,
         obstacles: &[Obstacle],
-    ) -> Result<Collisions, MechanismError> {
+    ) -> Result<Collisions, FieldError> {
         let mut visit = Collide::default();
         self.walk_tree(q, plane, obstacles, &mut visit)?;
         Ok(visit.finish())
@@ -307,7 +307,7 @@ impl Model {
         q: &[f64],
         plane: Plane,
         obstacles: &[Obstacle],
-    ) -> Result<Collisions, MechanismError> {
+    ) -> Result<Collisions, FieldError> {
         let mut visit = Collide::default();
         self.walk_all(q, plane, obstacles, &mut visit)?;
         Ok(visit.finish())
@@ -322,7 +322,7 @@ impl Model {
         q: &[f64],
         plane: Plane,
         obstacles: &[Obstacle],
-    ) -> Result<Option<(f64, Part, Part)>, MechanismError> {
+    ) -> Result<Option<(f64, Part, Part)>, FieldError> {
         let mut visit = Gap::default();
         self.walk_tree(q, plane, obstacles, &mut visit)?;
         Ok(visit.best)
@@ -335,7 +335,7 @@ impl Model {
         q: &[f64],
         plane: Plane,
         obstacles: &[Obstacle],
-    ) -> Result<Option<(f64, Part, Part)>, MechanismError> {
+    ) -> Result<Option<(f64, Part, Part)>, FieldError> {
         let mut visit = Gap::default();
         self.walk_all(q, plane, obstacles, &mut visit)?;
         Ok(visit.best)
@@ -349,7 +349,7 @@ impl Model {
         plane: Plane,
         obstacles: &[Obstacle],
         visit: &mut dyn Visit,
-    ) -> Result<(), MechanismError> {
+    ) -> Result<(), FieldError> {
         check_all(obstacles)?;
         let (nodes, root) = self.bounding_tree(q, plane)?;
         let Some(root) = root else { return Ok(()) };
@@ -430,7 +430,7 @@ impl Model {
         plane: Plane,
         obstacles: &[Obstacle],
         visit: &mut dyn Visit,
-    ) -> Result<(), MechanismError> {
+    ) -> Result<(), FieldError> {
         check_all(obstacles)?;
         let placed = self.place(q)?;
         let caps: Vec<(usize, Capsule)> = self

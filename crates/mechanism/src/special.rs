@@ -7,7 +7,7 @@
 //! place frames. Each command is checked against the generic algorithm in
 //! the tests.
 
-use std::f64::consts::PI;
+use kinolab_common::angle::wrap;
 use std::fmt;
 use std::sync::Arc;
 
@@ -116,12 +116,6 @@ impl ForwardCommand for PlanarForward {
             nalgebra::UnitQuaternion::from_axis_angle(&nalgebra::Vector3::z_axis(), angle),
         ))
     }
-}
-
-/// Angle into (−π, π].
-fn wrap(a: f64) -> f64 {
-    let w = (a + PI).rem_euclid(2.0 * PI) - PI;
-    if w <= -PI { w + 2.0 * PI } else { w }
 }
 
 /// Both elbow solutions of a planar 2R arm reaching (x, y), if any.

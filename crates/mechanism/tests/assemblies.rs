@@ -1,11 +1,13 @@
 //! Mechanisms built from parts: mounting, coupling, closed loops, relative
 //! goals, specialised solvers and collision queries.
 
+mod support;
+
 use std::f64::consts::PI;
 
 use kinolab_mechanism::catalogue::mechanism;
 use kinolab_mechanism::{
-    FrameRef, Goal, MechanismError, Model, Obstacle, Options, Part, Plane, Pose, Target, Vector3,
+    FieldError, FrameRef, Goal, Model, Obstacle, Options, Part, Plane, Pose, Target, Vector3,
 };
 use proptest::prelude::*;
 
@@ -21,7 +23,7 @@ fn position(m: &Model, q: &[f64], name: &str) -> Vector3<f64> {
 }
 
 #[test]
-fn the_rocker_bogie_differential_holds_through_inverse_kinematics() -> Result<(), MechanismError> {
+fn the_rocker_bogie_differential_holds_through_inverse_kinematics() -> Result<(), FieldError> {
     let rover = mechanism("rocker-bogie")?;
     assert_eq!(rover.dof(), 4);
     let left = rover.variable("left-rocker").unwrap_or(usize::MAX);
@@ -55,7 +57,7 @@ fn the_rocker_bogie_differential_holds_through_inverse_kinematics() -> Result<()
 }
 
 #[test]
-fn the_coupled_jacobian_is_the_derivative_along_the_leader() -> Result<(), MechanismError> {
+fn the_coupled_jacobian_is_the_derivative_along_the_leader() -> Result<(), FieldError> {
     let rover = mechanism("rocker-bogie")?;
     let left = rover.variable("left-rocker").unwrap_or(usize::MAX);
     let mut q = rover.zero_state();
@@ -101,7 +103,7 @@ fn rocker_tip_closed_form(crank_angle: f64) -> [f64; 2] {
 }
 
 #[test]
-fn the_four_bar_stays_closed_all_the_way_round() -> Result<(), MechanismError> {
+fn the_four_bar_stays_closed_all_the_way_round() -> Result<(), FieldError> {
     let linkage = mechanism("four-bar")?;
     let crank = linkage.variable("crank").unwrap_or(usize::MAX);
     assert!(linkage.closure(&linkage.zero_state())?.closed);
@@ -126,7 +128,7 @@ fn the_four_bar_stays_closed_all_the_way_round() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn a_hexapod_is_one_leg_mounted_six_times() -> Result<(), MechanismError> {
+fn a_hexapod_is_one_leg_mounted_six_times() -> Result<(), FieldError> {
     let hexapod = mechanism("hexapod")?;
     assert_eq!(hexapod.dof(), 18);
     let legs: Vec<&str> = hexapod
@@ -149,7 +151,7 @@ fn a_hexapod_is_one_leg_mounted_six_times() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn a_goal_relative_to_a_moving_frame() -> Result<(), MechanismError> {
+fn a_goal_relative_to_a_moving_frame() -> Result<(), FieldError> {
     let robot = mechanism("rover-arm")?;
     assert_eq!(robot.dof(), 6);
     let names: Vec<&str> = robot.groups().iter().map(|g| g.name.as_str()).collect();
@@ -192,7 +194,7 @@ fn a_goal_relative_to_a_moving_frame() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), MechanismError> {
+fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), FieldError> {
     let two = mechanism("planar-2r")?;
     let three = mechanism("planar-3r")?;
     assert_eq!(
@@ -204,14 +206,7 @@ fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), Mechani
         ["closed-form planar FK", "analytic 3R"]
     );
     // The closed-form FK against the tree walk, over random states.
-    let mut s = 11_u64;
-    for _ in 0..200 {
-        let q: Vec<f64> = (0..3)
-            .map(|_| {
-                s = s.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
-                ((s >> 11) as f64 / (1u64 << 53) as f64) * 2.0 * PI - PI
-            })
-            .collect();
+    for q in support::sample(&proptest::collection::vec(-PI..PI, 3), 200) {
         for (arm, q) in [(&two, &q[..2]), (&three, &q[..])] {
             let f = frame(arm, "tool");
             let a = arm.pose(q, &f)?;
@@ -220,17 +215,10 @@ fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), Mechani
             assert!(a.rotation.angle_to(&b.rotation) < 1e-12);
         }
     }
-    let mut state = 7_u64;
-    let mut next = || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
     let options = Options::default();
     let mut exact = 0;
-    for _ in 0..300 {
-        let (r, a) = (2.0 * next(), 2.0 * PI * next());
+    let targets = (0.0f64..2.0, 0.0..2.0 * PI, -PI..PI);
+    for (r, a, phi) in support::sample(&targets, 300) {
         let p = Vector3::new(r * a.cos(), r * a.sin(), 0.0);
         let goal = [Goal::new(frame(&two, "tool"), Target::Position(p))];
         let special = two.solve(&goal, &[0.1, 0.1], &options)?;
@@ -241,7 +229,6 @@ fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), Mechani
             assert!((position(&two, &special.q, "tool") - p).norm() < 1e-9);
             exact += usize::from(special.iterations == 0);
         }
-        let phi = 2.0 * PI * next() - PI;
         let pose = Pose::from_parts(
             nalgebra::Translation3::new(p.x, p.y, 0.0),
             nalgebra::UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi),
@@ -262,7 +249,7 @@ fn closed_form_planar_solvers_agree_with_the_generic_one() -> Result<(), Mechani
 }
 
 #[test]
-fn collision_finds_a_folded_arm_and_an_obstacle() -> Result<(), MechanismError> {
+fn collision_finds_a_folded_arm_and_an_obstacle() -> Result<(), FieldError> {
     let arm = mechanism("planar-3r")?;
     let (l1, l3) = (
         arm.bodies().iter().position(|b| b.name == "q1"),
@@ -340,20 +327,6 @@ fn bad_obstacles_and_couplings_name_the_field() {
     assert!(e.message.contains("nope"));
 }
 
-fn random_state(m: &Model, unit: &[f64]) -> Vec<f64> {
-    let mut q: Vec<f64> = (0..m.dof())
-        .map(|i| {
-            let [lo, hi] = m
-                .variable_joint(i)
-                .and_then(|j| j.limits)
-                .unwrap_or([-PI, PI]);
-            lo + unit[i % unit.len()] * (hi - lo)
-        })
-        .collect();
-    m.apply_couplings(&mut q);
-    q
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(150))]
 
@@ -362,13 +335,20 @@ proptest! {
     #[test]
     fn tree_search_matches_brute_force(
         which in 0usize..4,
-        unit in proptest::collection::vec(0.0f64..1.0, 18),
+        unit in proptest::collection::vec(0.0f64..1.0, 64),
         obstacles in proptest::collection::vec((-1.5f64..1.5, -1.5f64..1.5, 0.02f64..0.4, any::<bool>()), 0..4),
         side in any::<bool>(),
     ) {
         let id = ["planar-3r", "hexapod", "rover-arm", "rocker-bogie"][which];
         let m = mechanism(id).unwrap_or_else(|e| panic!("{e}"));
-        let q = random_state(&m, &unit);
+        // Each joint somewhere within its limits, couplings applied.
+        let mut q: Vec<f64> = (0..m.dof())
+            .map(|i| {
+                let [lo, hi] = m.variable_joint(i).and_then(|j| j.limits).unwrap_or([-PI, PI]);
+                lo + unit[i] * (hi - lo)
+            })
+            .collect();
+        m.apply_couplings(&mut q);
         let plane = if side { Plane::Side } else { Plane::Plan };
         let obstacles: Vec<Obstacle> = obstacles
             .iter()
@@ -393,7 +373,7 @@ proptest! {
 }
 
 #[test]
-fn the_tree_skips_most_capsule_pairs_of_a_hexapod() -> Result<(), MechanismError> {
+fn the_tree_skips_most_capsule_pairs_of_a_hexapod() -> Result<(), FieldError> {
     let hexapod = mechanism("hexapod")?;
     let q = hexapod.zero_state();
     let fast = hexapod.collisions(&q, Plane::Plan, &[])?;

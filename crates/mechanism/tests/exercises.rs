@@ -3,10 +3,10 @@
 use kinolab_mechanism::catalogue::mechanism;
 use kinolab_mechanism::dh::Convention;
 use kinolab_mechanism::exercise::{SINGULAR, Task, conditioning};
-use kinolab_mechanism::{MechanismError, Vector3};
+use kinolab_mechanism::{FieldError, Vector3};
 
 #[test]
-fn reach_is_met_within_the_tolerance_only() -> Result<(), MechanismError> {
+fn reach_is_met_within_the_tolerance_only() -> Result<(), FieldError> {
     let arm = mechanism("planar-2r")?;
     let task = Task::Reach {
         frame: "tool".into(),
@@ -28,7 +28,7 @@ fn reach_is_met_within_the_tolerance_only() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn singular_configurations_of_the_two_link_arm() -> Result<(), MechanismError> {
+fn singular_configurations_of_the_two_link_arm() -> Result<(), FieldError> {
     let arm = mechanism("planar-2r")?;
     let tool = arm.frame("tool")?;
     let deg = |a: f64, b: f64| [a.to_radians(), b.to_radians()];
@@ -70,7 +70,7 @@ fn singular_configurations_of_the_two_link_arm() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn a_dh_row_counts_when_its_frame_matches() -> Result<(), MechanismError> {
+fn a_dh_row_counts_when_its_frame_matches() -> Result<(), FieldError> {
     let r = f64::to_radians;
     let task = Task::DhRow {
         convention: Convention::StandardDh,

@@ -4,8 +4,8 @@
 use std::f64::consts::PI;
 
 use kinolab_mechanism::catalogue::mechanism;
-use kinolab_mechanism::file::{from_json, from_json_with, matrix_of};
-use kinolab_mechanism::{MechanismError, Model, Pose};
+use kinolab_mechanism::file::{from_json, from_json_with};
+use kinolab_mechanism::{FieldError, Model, Pose};
 use serde_json::json;
 
 fn tool_pose(m: &Model, q: &[f64]) -> Pose {
@@ -18,53 +18,37 @@ fn same(a: &Pose, b: &Pose) -> bool {
         && a.rotation.angle_to(&b.rotation) < 1e-12
 }
 
+mod support;
+
+/// `count` seeded joint states of `m`, within its limits.
 fn states(m: &Model, count: usize) -> Vec<Vec<f64>> {
-    let mut s = 99_u64;
-    (0..count)
-        .map(|_| {
-            (0..m.dof())
-                .map(|_| {
-                    s = s.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
-                    ((s >> 11) as f64 / (1u64 << 53) as f64) * 2.0 * PI - PI
-                })
-                .collect()
-        })
-        .collect()
+    support::sample(&support::states(m), count)
 }
 
-/// The Puma written as product of exponentials — each axis and a point on
-/// it at q = 0, read off the DH model — moves exactly like the DH Puma.
+/// The Puma written by hand as a product of exponentials: each joint's
+/// axis and a point on it with every joint at zero, read off the standard
+/// DH table (joint i turns about z_{i−1} through o_{i−1}), and the tool at
+/// (0.4521, −0.15005, 1.1036) with the base's orientation. It must move
+/// exactly like the catalogue's DH Puma.
 #[test]
-fn zero_position_puma_matches_the_dh_puma() -> Result<(), MechanismError> {
-    let puma = mechanism("puma560")?;
-    let zero = puma.zero_state();
-    let placed = puma.place(&zero)?;
-    let joints: Vec<serde_json::Value> = (0..puma.dof())
-        .map(|v| {
-            let j = puma
-                .variable_joint(v)
-                .unwrap_or_else(|| panic!("variable {v}"));
-            let index = puma
-                .joints()
-                .iter()
-                .position(|x| x.name == j.name)
-                .unwrap_or(0);
-            let at = placed.joints[index];
-            let axis = at.rotation * j.axis.into_inner();
-            let p = at.translation.vector;
-            json!({
-                "name": j.name, "type": "revolute",
-                "axis": [axis.x, axis.y, axis.z], "point": [p.x, p.y, p.z],
-            })
-        })
-        .collect();
+fn zero_position_puma_matches_the_dh_puma() -> Result<(), FieldError> {
+    let (d1, a2, a3, d3, d4) = (0.6718, 0.4318, 0.0203, 0.15005, 0.4318);
+    let axis = |name: &str, axis: [f64; 3], point: [f64; 3]| json!({ "name": name, "type": "revolute", "axis": axis, "point": point });
     let file = json!({
         "name": "Puma by screws",
         "convention": "zero_position",
-        "joints": joints,
-        "tool": matrix_of(&tool_pose(&puma, &zero)),
+        "joints": [
+            axis("q1", [0.0, 0.0, 1.0], [0.0, 0.0, 0.0]),
+            axis("q2", [0.0, -1.0, 0.0], [0.0, 0.0, d1]),
+            axis("q3", [0.0, -1.0, 0.0], [a2, 0.0, d1]),
+            axis("q4", [0.0, 0.0, 1.0], [a2 + a3, -d3, d1]),
+            axis("q5", [0.0, -1.0, 0.0], [a2 + a3, -d3, d1 + d4]),
+            axis("q6", [0.0, 0.0, 1.0], [a2 + a3, -d3, d1 + d4]),
+        ],
+        "tool": [[1, 0, 0, a2 + a3], [0, 1, 0, -d3], [0, 0, 1, d1 + d4], [0, 0, 0, 1]],
     });
     let poe = from_json(&file.to_string())?;
+    let puma = mechanism("puma560")?;
     for q in states(&puma, 200) {
         assert!(same(&tool_pose(&poe, &q), &tool_pose(&puma, &q)), "{q:?}");
     }
@@ -72,7 +56,7 @@ fn zero_position_puma_matches_the_dh_puma() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn a_transforms_tree_matches_the_dh_chain() -> Result<(), MechanismError> {
+fn a_transforms_tree_matches_the_dh_chain() -> Result<(), FieldError> {
     let file = json!({
         "name": "2R by transforms",
         "convention": "transforms",
@@ -95,7 +79,7 @@ fn a_transforms_tree_matches_the_dh_chain() -> Result<(), MechanismError> {
 /// A hexapod assembled from two files — a torso with six mount points and
 /// one leg — is the catalogue's hexapod.
 #[test]
-fn a_hexapod_from_one_leg_file() -> Result<(), MechanismError> {
+fn a_hexapod_from_one_leg_file() -> Result<(), FieldError> {
     let leg = json!({
         "name": "Leg",
         "convention": "transforms",
@@ -141,7 +125,7 @@ fn a_hexapod_from_one_leg_file() -> Result<(), MechanismError> {
 }
 
 #[test]
-fn couplings_loops_and_shapes_load_from_a_file() -> Result<(), MechanismError> {
+fn couplings_loops_and_shapes_load_from_a_file() -> Result<(), FieldError> {
     let file = json!({
         "name": "Screw",
         "convention": "transforms",
@@ -217,11 +201,11 @@ fn bad_extended_files_name_the_field() {
 /// Every catalogue mechanism written as a file and read back moves the
 /// same: every body's frame, couplings, loops and shapes survive.
 #[test]
-fn saved_models_load_back_the_same() -> Result<(), MechanismError> {
+fn saved_models_load_back_the_same() -> Result<(), FieldError> {
     for (id, _, _) in kinolab_mechanism::catalogue::CATALOGUE {
         let model = mechanism(id)?;
         let text = kinolab_mechanism::file::to_json(&model);
-        let back = from_json(&text).map_err(|e| MechanismError::new(*id, e.to_string()))?;
+        let back = from_json(&text).map_err(|e| FieldError::new(*id, e.to_string()))?;
         assert_eq!(back.dof(), model.dof(), "{id}");
         assert_eq!(back.couplings().len(), model.couplings().len(), "{id}");
         assert_eq!(back.loops().len(), model.loops().len(), "{id}");

@@ -104,12 +104,18 @@ impl Chassis {
         }
         let reachable = limits.complement();
         let inputs = self.steering_inputs().len();
-        // δs: no more than the inputs, than the steered rows, and than the
-        // room the fixed wheels and linkages leave beyond δm (at least one
-        // motion must survive for steering to matter).
-        let room = reachable.rank().saturating_sub(mobility.max(1));
-        let steerability = inputs.min(c1s.rank()).min(room);
+        // δs = rank C₁s counted over independent inputs (a linkage is one
+        // input), and at most 2, or 1 once any fixed wheel is there. This
+        // holds even for a layout that cannot move right now: its steering
+        // inputs still move the rows of C₁s.
+        // Steering never adds more than the poses it can reach beyond δm
+        // (so DDOF ≤ δM ≤ DOF holds, as the sheet says).
         let dof = lie_closure(reachable).rank();
+        let cap = if c1f.rank() > 0 { 1 } else { 2 };
+        let steerability = inputs
+            .min(c1s.rank())
+            .min(cap)
+            .min(dof.saturating_sub(mobility));
         let icr = layout_icr(c1.rank(), first_row, &admissible);
         Analysis {
             rank_c1: c1.rank(),

@@ -4,11 +4,11 @@
 use std::f64::consts::FRAC_PI_2;
 
 use crate::chassis::Chassis;
-use crate::error::WheelsError;
+use crate::error::FieldError;
 use crate::wheel::{Wheel, WheelKind};
 
 /// A robot the lab can start from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub struct CatalogueEntry {
     pub id: &'static str,
     pub name: &'static str,
@@ -144,7 +144,7 @@ pub const EVERY_WHEEL_KIND: &str = r#"{
 }"#;
 
 /// Build the catalogue robot `id`.
-pub fn robot(id: &str) -> Result<Chassis, WheelsError> {
+pub fn robot(id: &str) -> Result<Chassis, FieldError> {
     let wheels = match id {
         "unicycle" => vec![fixed(0.0, 0.0, 0.0, 0.3)],
         "differential-drive" => vec![
@@ -208,7 +208,7 @@ pub fn robot(id: &str) -> Result<Chassis, WheelsError> {
         "every-wheel-kind" => return Chassis::from_json(EVERY_WHEEL_KIND),
         other => {
             let known: Vec<&str> = CATALOGUE.iter().map(|e| e.id).collect();
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 "robot",
                 format!("no catalogue robot {other:?}; known: {}", known.join(", ")),
             ));

@@ -1,6 +1,8 @@
 //! Graded exercises: a goal for a layout, checked by the same analysis the
 //! lab shows, with feedback that says what is still missing.
 
+use kinolab_common::Feedback;
+
 use crate::analysis::Icr;
 use crate::chassis::Chassis;
 
@@ -20,15 +22,8 @@ pub enum Goal {
     IcrAt { x: f64, y: f64, tolerance: f64 },
 }
 
-/// The outcome of a check.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Verdict {
-    pub met: bool,
-    pub message: String,
-}
-
-fn verdict(met: bool, message: String) -> Verdict {
-    Verdict { met, message }
+fn verdict(met: bool, message: String) -> Feedback {
+    Feedback { met, message }
 }
 
 impl Goal {
@@ -50,7 +45,7 @@ impl Goal {
     }
 
     /// Does `chassis` meet the goal? The message explains either way.
-    pub fn check(&self, chassis: &Chassis) -> Verdict {
+    pub fn check(&self, chassis: &Chassis) -> Feedback {
         let a = chassis.analyze();
         match *self {
             Goal::Maneuverability {
@@ -128,7 +123,7 @@ impl Goal {
 }
 
 /// Check a learner's answer to "which wheels disagree?" for a stuck layout.
-pub fn check_disagreeing(chassis: &Chassis, chosen: &[usize]) -> Verdict {
+pub fn check_disagreeing(chassis: &Chassis, chosen: &[usize]) -> Feedback {
     let Some(d) = chassis.disagreement() else {
         return verdict(false, "This layout can move: no wheel disagrees.".into());
     };

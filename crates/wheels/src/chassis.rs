@@ -3,8 +3,10 @@
 
 use nalgebra::{DMatrix, Vector3};
 
-use crate::error::{WheelsError, finite};
-use crate::wheel::{Wheel, WheelKind, WheelRows, wrap};
+use crate::error::{FieldError, finite};
+use kinolab_common::angle::wrap;
+
+use crate::wheel::{Wheel, WheelKind, WheelRows};
 
 /// The most wheels a chassis may have; keeps every computation small.
 pub const MAX_WHEELS: usize = 64;
@@ -35,15 +37,15 @@ pub struct Chassis {
 
 impl Chassis {
     /// Check every wheel and build the chassis, or say which field is wrong.
-    pub fn new(name: impl Into<String>, wheels: Vec<Wheel>) -> Result<Self, WheelsError> {
+    pub fn new(name: impl Into<String>, wheels: Vec<Wheel>) -> Result<Self, FieldError> {
         if wheels.is_empty() {
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 "wheels",
                 "a robot needs at least one wheel",
             ));
         }
         if wheels.len() > MAX_WHEELS {
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 "wheels",
                 format!("at most {MAX_WHEELS} wheels, got {}", wheels.len()),
             ));
@@ -56,7 +58,7 @@ impl Chassis {
                 let [ax, ay] = a.position();
                 let [bx, by] = b.position();
                 if (ax - bx).hypot(ay - by) < COINCIDENT {
-                    return Err(WheelsError::new(
+                    return Err(FieldError::new(
                         format!("wheels[{i}]"),
                         format!(
                             "sits on the same spot as wheels[{j}] ({ax:.3}, {ay:.3}); two wheels cannot share a contact point"
@@ -162,13 +164,13 @@ impl Chassis {
     /// their axles keep meeting, at the point where the turned wheel's axle
     /// now crosses the fixed wheels' common axle line (or the line through
     /// P and the old meeting point when there is none).
-    pub fn steer(&self, index: usize, beta: f64) -> Result<Self, WheelsError> {
+    pub fn steer(&self, index: usize, beta: f64) -> Result<Self, FieldError> {
         let field = format!("wheels[{index}]");
         let Some(wheel) = self.wheels.get(index) else {
-            return Err(WheelsError::new(field, "no such wheel"));
+            return Err(FieldError::new(field, "no such wheel"));
         };
         if !wheel.kind.is_steerable() {
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 format!("{field}.beta"),
                 format!("a {} wheel cannot be steered", wheel.kind.name()),
             ));
@@ -270,20 +272,20 @@ pub(crate) fn nearest_half_turn(current: f64, target: f64) -> f64 {
     current + d
 }
 
-fn check_wheel(i: usize, w: &Wheel) -> Result<(), WheelsError> {
+fn check_wheel(i: usize, w: &Wheel) -> Result<(), FieldError> {
     let field = |name: &str| format!("wheels[{i}].{name}");
     finite(field("alpha"), w.alpha)?;
     finite(field("beta"), w.beta)?;
     finite(field("l"), w.l)?;
     finite(field("radius"), w.radius)?;
     if w.l < 0.0 {
-        return Err(WheelsError::new(
+        return Err(FieldError::new(
             field("l"),
             format!("a distance cannot be negative, got {}", w.l),
         ));
     }
     if w.radius <= 0.0 {
-        return Err(WheelsError::new(
+        return Err(FieldError::new(
             field("radius"),
             format!("must be above 0, got {}", w.radius),
         ));
@@ -292,7 +294,7 @@ fn check_wheel(i: usize, w: &Wheel) -> Result<(), WheelsError> {
         WheelKind::Castor { offset } => {
             finite(field("offset"), offset)?;
             if offset <= 0.0 {
-                return Err(WheelsError::new(
+                return Err(FieldError::new(
                     field("offset"),
                     format!(
                         "a castor needs an offset d above 0 (with d = 0 it is a steered wheel), got {offset}"
@@ -303,7 +305,7 @@ fn check_wheel(i: usize, w: &Wheel) -> Result<(), WheelsError> {
         WheelKind::Swedish { gamma } => {
             finite(field("gamma"), gamma)?;
             if gamma.cos() < 1e-6 {
-                return Err(WheelsError::new(
+                return Err(FieldError::new(
                     field("gamma"),
                     format!(
                         "the roller angle must lie strictly between -90° and 90°, got {:.3}°",
@@ -316,7 +318,7 @@ fn check_wheel(i: usize, w: &Wheel) -> Result<(), WheelsError> {
     }
     if let Some(group) = &w.steer_group {
         if w.kind != WheelKind::Steered {
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 field("steer_group"),
                 format!(
                     "only steered wheels share a steering input; this one is {}",
@@ -329,7 +331,7 @@ fn check_wheel(i: usize, w: &Wheel) -> Result<(), WheelsError> {
                 .chars()
                 .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
         {
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 field("steer_group"),
                 format!("use letters, digits, - and _ only, got {group:?}"),
             ));

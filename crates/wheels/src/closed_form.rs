@@ -1,22 +1,10 @@
 //! Textbook special cases. The general model must agree with each of them;
 //! the tests check that it does.
 
-use crate::error::{WheelsError, finite};
-
-fn positive(field: &str, value: f64) -> Result<f64, WheelsError> {
-    finite(field, value)?;
-    if value > 0.0 {
-        Ok(value)
-    } else {
-        Err(WheelsError::new(
-            field,
-            format!("must be above 0, got {value}"),
-        ))
-    }
-}
+use crate::error::{FieldError, finite, positive};
 
 /// A differential drive's motion from its wheel ground speeds.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct DiffDriveMotion {
     /// Forward speed v = (V_R + V_L)/2.
     pub v: f64,
@@ -33,7 +21,7 @@ pub fn differential_drive(
     track: f64,
     v_left: f64,
     v_right: f64,
-) -> Result<DiffDriveMotion, WheelsError> {
+) -> Result<DiffDriveMotion, FieldError> {
     let w = positive("track", track)?;
     finite("v_left", v_left)?;
     finite("v_right", v_right)?;
@@ -64,12 +52,12 @@ pub fn tricycle(
     wheelbase: f64,
     steer: f64,
     front_speed: f64,
-) -> Result<TricycleMotion, WheelsError> {
+) -> Result<TricycleMotion, FieldError> {
     let l = positive("wheelbase", wheelbase)?;
     finite("steer", steer)?;
     finite("front_speed", front_speed)?;
     if steer.cos().abs() < 1e-12 {
-        return Err(WheelsError::new(
+        return Err(FieldError::new(
             "steer",
             "at ±90° the front wheel pushes sideways and the rear axle cannot follow",
         ));
@@ -86,12 +74,12 @@ pub fn tricycle(
 
 /// The outer wheel's steering angle for an Ackermann linkage, from the
 /// inner one: cot s_o − cot s_i = w/L (both angles positive, inner larger).
-pub fn ackermann_outer(wheelbase: f64, track: f64, inner: f64) -> Result<f64, WheelsError> {
+pub fn ackermann_outer(wheelbase: f64, track: f64, inner: f64) -> Result<f64, FieldError> {
     let l = positive("wheelbase", wheelbase)?;
     let w = positive("track", track)?;
     finite("inner", inner)?;
     if inner <= 0.0 || inner >= std::f64::consts::FRAC_PI_2 {
-        return Err(WheelsError::new(
+        return Err(FieldError::new(
             "inner",
             "the inner steering angle must lie strictly between 0 and 90°",
         ));
@@ -102,7 +90,7 @@ pub fn ackermann_outer(wheelbase: f64, track: f64, inner: f64) -> Result<f64, Wh
 
 /// Gear pair: the driven gear's speed and torque from the driving gear's,
 /// ω₂ = (r₁/r₂) ω₁ and τ₂ = (r₂/r₁) τ₁ (losses ignored).
-pub fn gear(r1: f64, r2: f64, omega1: f64, torque1: f64) -> Result<(f64, f64), WheelsError> {
+pub fn gear(r1: f64, r2: f64, omega1: f64, torque1: f64) -> Result<(f64, f64), FieldError> {
     let r1 = positive("r1", r1)?;
     let r2 = positive("r2", r2)?;
     finite("omega1", omega1)?;

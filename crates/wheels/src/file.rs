@@ -4,7 +4,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::chassis::Chassis;
-use crate::error::WheelsError;
+use crate::error::FieldError;
 use crate::wheel::{Wheel, WheelKind};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -45,14 +45,14 @@ struct RobotFile {
 
 impl Chassis {
     /// Read a robot file. Errors name the JSON path of the bad field.
-    pub fn from_json(text: &str) -> Result<Self, WheelsError> {
+    pub fn from_json(text: &str) -> Result<Self, FieldError> {
         let de = &mut serde_json::Deserializer::from_str(text);
         let file: RobotFile = serde_path_to_error::deserialize(de).map_err(|e| {
             let path = e.path().to_string();
             let inner = e.into_inner();
             let message = inner.to_string();
             // serde_json appends " at line L column C"; keep it, it helps.
-            WheelsError::new(if path == "." { String::new() } else { path }, message)
+            FieldError::new(if path == "." { String::new() } else { path }, message)
         })?;
         let wheels = file
             .wheels
@@ -73,13 +73,13 @@ impl Chassis {
     }
 }
 
-fn entry_to_wheel(i: usize, e: &WheelEntry) -> Result<Wheel, WheelsError> {
+fn entry_to_wheel(i: usize, e: &WheelEntry) -> Result<Wheel, FieldError> {
     let field = |name: &str| format!("wheels[{i}].{name}");
     let needs = |value: Option<f64>, name: &str, why: &str| {
-        value.ok_or_else(|| WheelsError::new(field(name), format!("missing: {why}")))
+        value.ok_or_else(|| FieldError::new(field(name), format!("missing: {why}")))
     };
     let refuse = |value: &Option<f64>, name: &str| match value {
-        Some(_) => Err(WheelsError::new(
+        Some(_) => Err(FieldError::new(
             field(name),
             format!("a {:?} wheel has no {name}", e.kind).to_lowercase(),
         )),
@@ -194,7 +194,7 @@ impl Chassis {
     }
 
     /// Read a compact layout code (see [`Chassis::to_compact`]).
-    pub fn from_compact(name: &str, code: &str) -> Result<Self, WheelsError> {
+    pub fn from_compact(name: &str, code: &str) -> Result<Self, FieldError> {
         let wheels = code
             .split(';')
             .map(str::trim)
@@ -206,9 +206,9 @@ impl Chassis {
     }
 }
 
-fn compact_wheel(i: usize, part: &str) -> Result<Wheel, WheelsError> {
+fn compact_wheel(i: usize, part: &str) -> Result<Wheel, FieldError> {
     let field = format!("layout wheel {}", i + 1);
-    let bad = |what: String| WheelsError::new(field.clone(), what);
+    let bad = |what: String| FieldError::new(field.clone(), what);
     let pieces: Vec<&str> = part.split(',').map(str::trim).collect();
     if pieces.len() < 5 {
         return Err(bad(format!(

@@ -6,8 +6,10 @@ use serde::Serialize;
 
 use crate::analysis::line_row;
 use crate::chassis::{Chassis, group_meeting_point, nearest_half_turn};
-use crate::error::{WheelsError, finite};
-use crate::wheel::{SlidingExtra, Wheel, WheelKind, wrap};
+use crate::error::{FieldError, finite};
+use kinolab_common::angle::wrap;
+
+use crate::wheel::{SlidingExtra, Wheel, WheelKind};
 
 /// What one wheel must do for a requested chassis twist.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -47,7 +49,7 @@ fn tolerance(twist: &Vector3<f64>, wheel: &Wheel) -> f64 {
     1e-9 * (twist.x.abs() + twist.y.abs() + twist.z.abs() * (1.0 + wheel.l)).max(1.0)
 }
 
-fn check_twist(twist: &Vector3<f64>) -> Result<(), WheelsError> {
+fn check_twist(twist: &Vector3<f64>) -> Result<(), FieldError> {
     for (i, v) in twist.iter().enumerate() {
         finite(format!("twist[{i}]"), *v)?;
     }
@@ -57,7 +59,7 @@ fn check_twist(twist: &Vector3<f64>) -> Result<(), WheelsError> {
 impl Chassis {
     /// Inverse kinematics: each wheel's spin (and steering) for a chassis
     /// twist ξ̇_R = (ẋ_R, ẏ_R, θ̇), with every constraint the twist breaks.
-    pub fn inverse(&self, twist: Vector3<f64>) -> Result<InverseSolution, WheelsError> {
+    pub fn inverse(&self, twist: Vector3<f64>) -> Result<InverseSolution, FieldError> {
         check_twist(&twist)?;
         let mut violations = Vec::new();
         let wheels: Vec<WheelCommand> = self
@@ -198,9 +200,9 @@ impl Chassis {
     /// always take part; castor and Swedish sliding rows carry unknowns
     /// (β̇, roller spin) and a ball's spin has no direction, so those are
     /// left out.
-    pub fn forward(&self, spins: &[Option<f64>]) -> Result<ForwardSolution, WheelsError> {
+    pub fn forward(&self, spins: &[Option<f64>]) -> Result<ForwardSolution, FieldError> {
         if spins.len() != self.wheels().len() {
-            return Err(WheelsError::new(
+            return Err(FieldError::new(
                 "wheels",
                 format!(
                     "expected one spin per wheel ({}), got {}",

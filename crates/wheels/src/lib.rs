@@ -27,10 +27,10 @@ mod wheel;
 
 pub use analysis::{Analysis, Disagreement, Icr, lie_closure, twist_icr};
 pub use chassis::{Chassis, MAX_WHEELS, SteeringInput};
-pub use error::WheelsError;
+pub use error::FieldError;
 pub use kinematics::{
     ForwardSolution, InverseSolution, Violation, WheelCommand, integrate, rotation, to_inertial,
 };
-pub use nalgebra::Vector3;
+pub use nalgebra::{Matrix3, Vector3};
 pub use span::{RANK_TOLERANCE, Span3};
-pub use wheel::{SlidingExtra, Wheel, WheelKind, WheelRows, wrap};
+pub use wheel::{SlidingExtra, Wheel, WheelKind, WheelRows};

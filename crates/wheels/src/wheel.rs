@@ -1,6 +1,7 @@
 //! One wheel: its kind, where it sits on the chassis, and the two
 //! constraint rows it contributes (reference sheet, "One row per constraint").
 
+use kinolab_common::angle::wrap;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -188,13 +189,6 @@ impl Wheel {
         let [x, y] = self.position();
         [twist.x - twist.z * y, twist.y + twist.z * x]
     }
-}
-
-/// An angle wrapped to (−π, π].
-pub fn wrap(angle: f64) -> f64 {
-    use std::f64::consts::{PI, TAU};
-    let a = (angle + PI).rem_euclid(TAU) - PI;
-    if a <= -PI { a + TAU } else { a }
 }
 
 #[cfg(test)]

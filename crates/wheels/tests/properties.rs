@@ -97,15 +97,29 @@ proptest! {
     }
 
     #[test]
-    fn degrees_obey_their_inequalities(chassis in layout()) {
+    fn degrees_agree_with_an_independent_null_space(chassis in layout()) {
         let a = chassis.analyze();
-        prop_assert_eq!(a.rank_c1 + a.mobility, 3);
-        prop_assert!(a.ddof() <= a.maneuverability && a.maneuverability <= a.dof.max(a.maneuverability));
-        prop_assert!(a.maneuverability <= 3 && a.steerability <= 2);
-        prop_assert!(a.dof >= a.reachable.rank());
-        prop_assert_eq!(a.holonomic, a.dof > 0 && a.ddof() == a.dof);
-        if a.mobility >= 1 {
-            prop_assert!(a.maneuverability <= a.dof);
+        // δm against nalgebra's SVD of the stacked sliding rows.
+        let c1 = chassis.c1();
+        let svd_rank = if c1.nrows() == 0 { 0 } else { c1.rank(1e-9) };
+        prop_assert_eq!(a.rank_c1, svd_rank);
+        prop_assert_eq!(a.mobility, 3 - svd_rank);
+        // Every admissible twist satisfies every sliding row.
+        for v in a.admissible.basis() {
+            let residual = (&c1 * nalgebra::DVector::from_column_slice(v.as_slice())).norm();
+            prop_assert!(residual < 1e-9, "{residual}");
+        }
+        // No steered wheel, no steerability; a steered one that counts adds one.
+        let steered = chassis.wheels().iter().any(|w| w.kind == WheelKind::Steered);
+        if !steered {
+            prop_assert_eq!(a.steerability, 0);
+        }
+        // A holonomic robot can make every motion at once: IK is feasible
+        // for a sideways slide and a turn on the spot.
+        if a.holonomic && a.dof == 3 {
+            for twist in [Vector3::new(0.0, 1.0, 0.0), Vector3::new(0.0, 0.0, 1.0)] {
+                prop_assert!(chassis.inverse(twist).unwrap().feasible);
+            }
         }
         // The ICR kind follows the rank.
         let kind_ok = match a.icr {
@@ -167,23 +181,29 @@ proptest! {
         let car = kinolab_wheels::catalogue::robot("ackermann-car").unwrap();
         // Steer the left front wheel; the linkage moves the right one.
         let base = car.wheels()[2].beta;
-        let car = car.steer(2, base + turn.signum() * steer_to - 0.0).unwrap();
+        let car = car.steer(2, base + turn.signum() * steer_to).unwrap();
         let a = car.analyze();
         prop_assert_eq!(a.mobility, 1);
-        if let Icr::Point { x, y } = a.icr {
-            prop_assert!(x.abs() < 1e-9);
-            // Inner and outer angles from the rear axle: cot s_o − cot s_i = w/L.
-            let (l, w) = (1.0, 0.6);
-            let (inner, outer) = ((l / (y.abs() - w / 2.0)).atan(), (l / (y.abs() + w / 2.0)).atan());
-            prop_assert!((ackermann_outer(l, w, inner).unwrap() - outer).abs() < 1e-9);
-            let left = car.wheels()[2].clone();
-            let right = car.wheels()[3].clone();
-            for wheel in [left, right] {
-                let [px, py] = wheel.position();
-                let [nx, ny] = wheel.axle();
-                prop_assert!(((0.0 - px) * ny - (y - py) * nx).abs() < 1e-9, "axle through ICR");
-            }
-        }
+        // Each front wheel's heading from straight ahead, from its rolling
+        // direction: wheelbase L = 1, track w = 0.6.
+        let heading = |i: usize| {
+            let [tx, ty] = car.wheels()[i].rolling_direction();
+            ty.atan2(tx)
+        };
+        let (left, right) = (heading(2), heading(3));
+        // The ICR lies on the rear axle (x = 0), where the left wheel's
+        // axle meets it: y = 0.3 + L / tan(left).
+        let expected = 0.3 + 1.0 / left.tan();
+        let Icr::Point { x, y } = a.icr else {
+            return Err(TestCaseError::fail(format!("a steered car has an ICR point, got {:?}", a.icr)));
+        };
+        prop_assert!(x.abs() < 1e-9 && (y - expected).abs() < 1e-9 * (1.0 + expected.abs()), "{y} vs {expected}");
+        // The Ackermann condition: cot s_right − cot s_left = w / L, and the
+        // closed form gives the outer wheel's angle from the inner one's.
+        prop_assert!((1.0 / right.tan() - 1.0 / left.tan() - 0.6).abs() < 1e-9);
+        let (inner, outer) = if left.abs() > right.abs() { (left, right) } else { (right, left) };
+        let closed = ackermann_outer(1.0, 0.6, inner.abs()).unwrap();
+        prop_assert!((closed - outer.abs()).abs() < 1e-9, "{} vs {}", closed, outer);
     }
 
     #[test]
@@ -214,7 +234,7 @@ fn synchro_belt_turns_every_wheel_by_the_same_angle() {
     let before: Vec<f64> = synchro.wheels().iter().map(|w| w.beta).collect();
     let turned = synchro.steer(1, before[1] + 0.4).unwrap();
     for (b, w) in before.iter().zip(turned.wheels()) {
-        assert!((kinolab_wheels::wrap(w.beta - b) - 0.4).abs() < 1e-12);
+        assert!((kinolab_common::angle::wrap(w.beta - b) - 0.4).abs() < 1e-12);
     }
     let a = turned.analyze();
     assert_eq!((a.mobility, a.steerability), (1, 1));

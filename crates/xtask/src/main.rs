@@ -4,7 +4,9 @@
 //!   http://127.0.0.1:8080.
 //! - `test`: install what is missing (Chromium too), then formatting,
 //!   clippy, native tests, wasm tests in headless Chromium, and the
-//!   end-to-end browser test against a release build.
+//!   end-to-end browser test. This is what CI runs.
+//! - `check`: a quick check of a change: formatting, then clippy and the
+//!   native tests of the crates it touches and their dependents.
 //! - `dist`: build the static site into `dist/`.
 //! - `bench`: native (criterion) and wasm (headless Chromium) benchmarks
 //!   side by side, wasm size, and time to first frame.
@@ -12,8 +14,10 @@
 //! Every tool is installed from a package registry by name; nothing
 //! downloads binaries at run time (trunk runs with `--offline`).
 
+mod changes;
 mod setup;
 mod tasks;
+mod versions;
 
 use std::process::ExitCode;
 
@@ -24,11 +28,14 @@ fn main() -> ExitCode {
     let result = match task {
         "serve" => tasks::serve(rest),
         "test" => tasks::test(),
+        "check" => tasks::check(),
         "dist" => tasks::dist(),
         "bench" => tasks::bench(rest),
         "setup" => setup::ensure(setup::Needs { browser: true }),
         _ => {
-            eprintln!("usage: cargo xtask <serve [--dev] | test | dist | bench [--quick] | setup>");
+            eprintln!(
+                "usage: cargo xtask <serve [--dev] | test | check | dist | bench [--quick] | setup>"
+            );
             return ExitCode::from(2);
         }
     };

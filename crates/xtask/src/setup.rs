@@ -3,6 +3,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use crate::versions;
+
 /// Which optional pieces a task needs.
 #[derive(Debug, Clone, Copy)]
 pub struct Needs {
@@ -69,22 +71,14 @@ pub fn path_env() -> String {
 pub fn locked_wasm_bindgen() -> Result<String> {
     let lock = std::fs::read_to_string(root().join("Cargo.lock"))
         .map_err(|e| format!("Cargo.lock: {e}"))?;
-    let mut lines = lock.lines();
-    while let Some(line) = lines.next() {
-        if line == "name = \"wasm-bindgen\""
-            && let Some(version) = lines.next().and_then(|l| l.strip_prefix("version = \""))
-        {
-            return Ok(version.trim_end_matches('"').to_owned());
-        }
-    }
-    Err("Cargo.lock has no wasm-bindgen entry".into())
+    versions::wasm_bindgen(&lock)
 }
 
 fn has_version(program: &str, wanted: &str) -> bool {
     output(program, &["--version"]).is_some_and(|v| v.contains(wanted))
 }
 
-/// Install whatever is missing.
+/// Install whatever is missing, saying what and why.
 pub fn ensure(needs: Needs) -> Result {
     let installed = output("rustup", &["target", "list", "--installed"]).unwrap_or_default();
     if !installed
@@ -93,34 +87,77 @@ pub fn ensure(needs: Needs) -> Result {
     {
         run(Command::new("rustup").args(["target", "add", "wasm32-unknown-unknown"]))?;
     }
-    if !has_version("trunk", "trunk 0.21.") {
-        run(Command::new("cargo").args(["install", "trunk", "--version", "0.21.14", "--locked"]))?;
-    }
-    let bindgen = locked_wasm_bindgen()?;
-    if !has_version("wasm-bindgen", &format!("wasm-bindgen {bindgen}")) {
-        // Not --locked: the registry snapshot lags the CLI's own lock file.
-        run(Command::new("cargo").args(["install", "wasm-bindgen-cli", "--version", &bindgen]))?;
-    }
-    if output("wasm-pack", &["--version"]).is_none() {
-        run(Command::new("cargo").args(["install", "wasm-pack"]))?;
-    }
-    let wasm_opt = root().join("web/node_modules/.bin/wasm-opt");
-    let driver = root().join("web/node_modules/playwright-core/package.json");
-    if !wasm_opt.exists() || !driver.exists() {
-        run(Command::new("npm").args(["ci", "--prefix", "web", "--no-audit", "--no-fund"]))?;
-    }
-    if needs.browser
-        && (output("chromium", &["--version"]).is_none()
-            || output("chromedriver", &["--version"]).is_none())
-    {
-        if output("apt-get", &["--version"]).is_some() {
-            run(Command::new("apt-get").arg("update"))?;
-            run(Command::new("apt-get")
-                .args(["install", "-y", "chromium", "chromium-driver"])
-                .env("DEBIAN_FRONTEND", "noninteractive"))?;
-        } else {
-            return Err("Chromium and ChromeDriver are needed for the browser tests: install them with your package manager".into());
-        }
+    cargo_tool("trunk", "trunk", versions::TRUNK, true)?;
+    // Not --locked: the registry snapshot lags the CLI's own lock file.
+    cargo_tool(
+        "wasm-bindgen",
+        "wasm-bindgen-cli",
+        &locked_wasm_bindgen()?,
+        false,
+    )?;
+    cargo_tool("wasm-pack", "wasm-pack", versions::WASM_PACK, true)?;
+    npm_tools()?;
+    if needs.browser {
+        browser()?;
     }
     Ok(())
+}
+
+/// `program` at `version`, installed with cargo when missing or different.
+fn cargo_tool(program: &str, krate: &str, version: &str, locked: bool) -> Result {
+    if has_version(program, &format!("{program} {version}")) {
+        return Ok(());
+    }
+    eprintln!("Installing {krate} {version} (about 5–10 minutes, once)…");
+    let mut cmd = Command::new("cargo");
+    cmd.args(["install", krate, "--version", version]);
+    if locked {
+        cmd.arg("--locked");
+    }
+    run(&mut cmd)
+}
+
+/// wasm-opt (binaryen) and the Chromium driver, from the npm registry.
+fn npm_tools() -> Result {
+    let wasm_opt = root().join("web/node_modules/binaryen/package.json");
+    let driver = root().join("web/node_modules/playwright-core/package.json");
+    let has = |path: &Path, version: &str| {
+        std::fs::read_to_string(path)
+            .is_ok_and(|t| t.contains(&format!("\"version\": \"{version}\"")))
+    };
+    if has(&wasm_opt, versions::BINARYEN) && has(&driver, versions::PLAYWRIGHT_CORE) {
+        return Ok(());
+    }
+    eprintln!(
+        "Installing binaryen {} and playwright-core {} from npm into web/node_modules…",
+        versions::BINARYEN,
+        versions::PLAYWRIGHT_CORE
+    );
+    run(Command::new("npm").args([
+        "install",
+        "--prefix",
+        "web",
+        "--no-save",
+        "--no-audit",
+        "--no-fund",
+        &format!("binaryen@{}", versions::BINARYEN),
+        &format!("playwright-core@{}", versions::PLAYWRIGHT_CORE),
+    ]))
+}
+
+/// Debian's Chromium and ChromeDriver, when missing (needs apt and root).
+fn browser() -> Result {
+    if output("chromium", &["--version"]).is_some()
+        && output("chromedriver", &["--version"]).is_some()
+    {
+        return Ok(());
+    }
+    if output("apt-get", &["--version"]).is_none() {
+        return Err("Chromium and ChromeDriver are needed for the browser tests: install them with your package manager".into());
+    }
+    eprintln!("Installing Debian's chromium and chromium-driver with apt-get (needs root)…");
+    run(Command::new("apt-get").arg("update"))?;
+    run(Command::new("apt-get")
+        .args(["install", "-y", "chromium", "chromium-driver"])
+        .env("DEBIAN_FRONTEND", "noninteractive"))
 }

@@ -74,7 +74,7 @@ pub fn serve(args: &[String]) -> Result {
     run(&mut tool("trunk", &trunk_args))
 }
 
-/// Everything that proves the lab works.
+/// Everything that proves the lab works: what CI runs.
 pub fn test() -> Result {
     let started = std::time::Instant::now();
     ensure(Needs { browser: true })?;
@@ -99,7 +99,7 @@ pub fn test() -> Result {
         "-D",
         "warnings",
     ]))?;
-    run(&mut cargo(&["test", "--workspace"]))?;
+    native_tests(None)?;
     run(cargo(&[
         "test",
         "-p",
@@ -108,16 +108,82 @@ pub fn test() -> Result {
         "wasm32-unknown-unknown",
     ])
     .env("CHROMEDRIVER", chromedriver()))?;
-    js_package(true)?;
-    run(&mut tool("trunk", &["build", "--release", "--offline"]))?;
+    // The end-to-end test checks behaviour, not size: a quick optimised
+    // build without link-time optimisation or wasm-opt. `cargo xtask dist`
+    // and `cargo xtask bench` make (and measure) the release build.
+    js_package(false)?;
+    run(&mut tool(
+        "trunk",
+        &[
+            "build",
+            "--offline",
+            "--cargo-profile",
+            "e2e",
+            "--dist",
+            E2E_SITE,
+        ],
+    ))?;
     run(&mut tool(
         "node",
-        &["tests/e2e/lab.mjs", "dist", "target/e2e"],
+        &["tests/e2e/lab.mjs", E2E_SITE, "target/e2e"],
     ))?;
     eprintln!(
         "\nAll checks passed in {:.0} s.",
         started.elapsed().as_secs_f64()
     );
+    Ok(())
+}
+
+/// Where the end-to-end test's site is built.
+const E2E_SITE: &str = "target/e2e-site";
+
+/// Native tests of `crates` (every crate when `None`). The app's shell is
+/// tested without its window stack, which only eframe needs.
+fn native_tests(crates: Option<&[String]>) -> Result {
+    let mut args: Vec<&str> = vec!["test"];
+    match crates {
+        None => args.extend(["--workspace", "--exclude", "kinolab-app"]),
+        Some(list) => {
+            for name in list.iter().filter(|c| *c != "kinolab-app") {
+                args.extend(["-p", name]);
+            }
+        }
+    }
+    if args.len() > 1 {
+        run(&mut cargo(&args))?;
+    }
+    if crates.is_none_or(|list| list.iter().any(|c| c == "kinolab-app")) {
+        run(&mut cargo(&[
+            "test",
+            "-p",
+            "kinolab-app",
+            "--no-default-features",
+        ]))?;
+    }
+    Ok(())
+}
+
+/// A quick check of a change: formatting, then clippy and the native tests
+/// of the crates it touches and the crates that depend on them.
+pub fn check() -> Result {
+    let started = std::time::Instant::now();
+    run(&mut cargo(&["fmt", "--all", "--", "--check"]))?;
+    let crates = crate::changes::touched_crates()?;
+    if crates.is_empty() {
+        eprintln!("No crate changed since the last commit: formatting checked.");
+        return Ok(());
+    }
+    eprintln!("Checking {}", crates.join(", "));
+    let mut selection: Vec<&str> = Vec::new();
+    for name in &crates {
+        selection.extend(["-p", name]);
+    }
+    let mut clippy = vec!["clippy"];
+    clippy.extend(&selection);
+    clippy.extend(["--all-targets", "--", "-D", "warnings"]);
+    run(&mut cargo(&clippy))?;
+    native_tests(Some(&crates))?;
+    eprintln!("\nChecked in {:.0} s.", started.elapsed().as_secs_f64());
     Ok(())
 }
 

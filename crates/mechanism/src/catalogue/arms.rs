@@ -3,7 +3,7 @@
 use std::f64::consts::FRAC_PI_2;
 
 use crate::dh::{Convention, DhRow, chain_builder, shift};
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::model::{JointKind, Model, ModelBuilder, Pose};
 
 fn revolute(name: &str, a: f64, alpha: f64, d: f64, offset: f64, limits_deg: [f64; 2]) -> DhRow {
@@ -56,7 +56,7 @@ fn standard_link_shapes(b: &mut ModelBuilder, rows: &[DhRow], radius: f64) {
 
 /// A planar arm of revolute joints with the given link lengths, moving in
 /// the x–y plane, with its closed-form inverse kinematics plugged in.
-pub fn planar(links: &[f64]) -> Result<Model, MechanismError> {
+pub fn planar(links: &[f64]) -> Result<Model, FieldError> {
     let rows: Vec<DhRow> = links
         .iter()
         .enumerate()
@@ -80,7 +80,7 @@ pub fn planar(links: &[f64]) -> Result<Model, MechanismError> {
     Ok(model)
 }
 
-pub fn puma560() -> Result<Model, MechanismError> {
+pub fn puma560() -> Result<Model, FieldError> {
     let rows = puma560_rows();
     let mut b = chain_builder(
         "Puma 560",
@@ -94,7 +94,7 @@ pub fn puma560() -> Result<Model, MechanismError> {
     b.build()
 }
 
-pub fn stanford() -> Result<Model, MechanismError> {
+pub fn stanford() -> Result<Model, FieldError> {
     let rows = vec![
         revolute("q1", 0.0, -FRAC_PI_2, 0.412, 0.0, [-170.0, 170.0]),
         revolute("q2", 0.0, FRAC_PI_2, 0.154, 0.0, [-170.0, 170.0]),
@@ -125,7 +125,7 @@ pub fn stanford() -> Result<Model, MechanismError> {
     b.build()
 }
 
-pub fn panda() -> Result<Model, MechanismError> {
+pub fn panda() -> Result<Model, FieldError> {
     // Modified DH from Franka's documentation; the flange 0.107 m on.
     let rows = vec![
         revolute("q1", 0.0, 0.0, 0.333, 0.0, [-166.0, 166.0]),

@@ -5,7 +5,7 @@
 mod arms;
 mod rigs;
 
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::model::Model;
 
 pub use arms::puma560_rows;
@@ -60,7 +60,7 @@ pub const CATALOGUE: &[(&str, &str, &str)] = &[
 ];
 
 /// A built-in mechanism by id.
-pub fn mechanism(id: &str) -> Result<Model, MechanismError> {
+pub fn mechanism(id: &str) -> Result<Model, FieldError> {
     match id {
         "planar-2r" => arms::planar(&[1.0, 0.8]),
         "planar-3r" => arms::planar(&[1.0, 0.8, 0.3]),
@@ -73,7 +73,7 @@ pub fn mechanism(id: &str) -> Result<Model, MechanismError> {
         "four-bar" => rigs::four_bar(rigs::FOUR_BAR),
         other => {
             let known: Vec<&str> = CATALOGUE.iter().map(|(id, _, _)| *id).collect();
-            Err(MechanismError::new(
+            Err(FieldError::new(
                 "model",
                 format!(
                     "no built-in mechanism `{other}` (known: {})",

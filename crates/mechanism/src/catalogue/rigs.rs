@@ -6,7 +6,7 @@
 use nalgebra::{Unit, Vector3};
 
 use crate::dh::{rot_z, shift};
-use crate::error::MechanismError;
+use crate::error::FieldError;
 use crate::model::{JointKind, Model, ModelBuilder, Pose};
 
 fn y_axis() -> Unit<Vector3<f64>> {
@@ -62,7 +62,7 @@ pub const WHEEL_RADIUS: f64 = 0.1;
 /// Six wheels: each rocker carries a front wheel and a bogie, each bogie a
 /// middle and a rear wheel. The differential makes the right rocker turn
 /// opposite to the left one, so the chassis pitches by their average.
-pub fn rocker_bogie() -> Result<Model, MechanismError> {
+pub fn rocker_bogie() -> Result<Model, FieldError> {
     let mut b = ModelBuilder::new("Rocker-bogie rover");
     let chassis = bolt(&mut b, "chassis", 0, shift(0.0, 0.0, 0.35));
     b.shape(chassis, [-0.3, 0.0, 0.0], [0.3, 0.0, 0.0], 0.1);
@@ -124,7 +124,7 @@ pub fn rocker_bogie() -> Result<Model, MechanismError> {
 
 /// The rover part of the mobile manipulator: planar base motion (x, y,
 /// yaw), a chassis and a mount point for an arm.
-fn rover_base() -> Result<Model, MechanismError> {
+fn rover_base() -> Result<Model, FieldError> {
     let mut b = ModelBuilder::new("Rover");
     let x = b.joint(
         "x",
@@ -162,7 +162,7 @@ fn rover_base() -> Result<Model, MechanismError> {
 }
 
 /// A three-joint arm: waist about z, shoulder and elbow about y.
-fn three_joint_arm() -> Result<Model, MechanismError> {
+fn three_joint_arm() -> Result<Model, FieldError> {
     let mut b = ModelBuilder::new("Arm");
     let waist = hinge(
         &mut b,
@@ -199,7 +199,7 @@ fn three_joint_arm() -> Result<Model, MechanismError> {
 
 /// A mobile manipulator: the rover and the arm are separate mechanisms,
 /// and the arm is mounted on the rover's mount point.
-pub fn rover_arm() -> Result<Model, MechanismError> {
+pub fn rover_arm() -> Result<Model, FieldError> {
     let rover = rover_base()?;
     let arm = three_joint_arm()?;
     let mount = rover.frame("arm-mount")?;
@@ -209,14 +209,14 @@ pub fn rover_arm() -> Result<Model, MechanismError> {
         .bodies
         .iter()
         .position(|x| x.name == "rover/chassis")
-        .ok_or_else(|| MechanismError::new("model", "the rover has no chassis"))?;
+        .ok_or_else(|| FieldError::new("model", "the rover has no chassis"))?;
     b.mount(&arm, chassis, mount.offset, "arm", None);
     b.build()
 }
 
 /// One hexapod leg: coxa about z, femur and tibia about y; the tibia
 /// hangs straight down at zero, so the foot stands 0.15 m below the hip.
-fn leg() -> Result<Model, MechanismError> {
+fn leg() -> Result<Model, FieldError> {
     let mut b = ModelBuilder::new("Leg");
     let coxa = hinge(
         &mut b,
@@ -261,7 +261,7 @@ pub const HEXAPOD_MOUNTS: [(&str, f64, f64, f64); 6] = [
     ("right-front", 0.12, -0.06, -45.0),
 ];
 
-pub fn hexapod() -> Result<Model, MechanismError> {
+pub fn hexapod() -> Result<Model, FieldError> {
     let leg = leg()?;
     let mut b = ModelBuilder::new("Hexapod");
     let torso = bolt(&mut b, "torso", 0, shift(0.0, 0.0, 0.15));
@@ -295,13 +295,13 @@ pub const FOUR_BAR: FourBar = FourBar {
 /// the loop constraint puts the rocker's end back on the right pivot. The
 /// passive joints' offsets are the assembled angles at crank angle 0, so
 /// the zero state is closed.
-pub fn four_bar(l: FourBar) -> Result<Model, MechanismError> {
+pub fn four_bar(l: FourBar) -> Result<Model, FieldError> {
     // At crank angle 0 the crank tip B is at (crank, 0); C closes the
     // triangle B–C–D with |BC| = coupler and |CD| = rocker.
     let bd = l.ground - l.crank;
     let cos_b = (l.coupler * l.coupler + bd * bd - l.rocker * l.rocker) / (2.0 * l.coupler * bd);
     if !(-1.0..=1.0).contains(&cos_b) {
-        return Err(MechanismError::new(
+        return Err(FieldError::new(
             "links",
             "these lengths cannot be assembled at crank angle 0",
         ));

@@ -1,0 +1,55 @@
+//! The shell in eframe: the app as an `eframe::App`, stored progress, and
+//! saving the files widgets ask for (natively into the working folder; in
+//! the browser as downloads, through [`crate::web`]).
+
+use crate::progress;
+use crate::shell::KinolabApp;
+
+impl eframe::App for KinolabApp {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        #[cfg(target_arch = "wasm32")]
+        crate::web::before_frame(self, frame);
+        #[cfg(not(target_arch = "wasm32"))]
+        let _ = frame;
+        self.show(ui);
+        for file in kinolab_widgets::export::take_save_requests(ui.ctx()) {
+            save(&file);
+        }
+        #[cfg(target_arch = "wasm32")]
+        crate::web::after_frame(self);
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(hash) = self.take_pending_hash() {
+            log::debug!("now at {hash}");
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Title(self.title()));
+        }
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        storage.set_string(progress::STORAGE_KEY, self.progress_json());
+    }
+}
+
+/// Save a file a widget asked for.
+fn save(file: &kinolab_widgets::export::SaveRequest) {
+    #[cfg(target_arch = "wasm32")]
+    if let Err(e) = crate::web::download(&file.name, &file.mime, &file.bytes) {
+        log::warn!("could not download {}: {e:?}", file.name);
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    if let Err(e) = std::fs::write(&file.name, &file.bytes) {
+        log::warn!("could not save {}: {e}", file.name);
+    }
+}
+
+/// Set up the app for eframe: stored progress, the page the address names.
+pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
+    #[cfg(target_arch = "wasm32")]
+    let stored = {
+        let _ = cc; // the browser's own storage is read directly
+        crate::web::load_progress()
+    };
+    #[cfg(not(target_arch = "wasm32"))]
+    let stored = cc.storage.and_then(|s| s.get_string(progress::STORAGE_KEY));
+    KinolabApp::new(stored.as_deref(), hash)
+}

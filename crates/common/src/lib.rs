@@ -1,0 +1,19 @@
+//! The small things every Kinolab crate shares, each written exactly once.
+//!
+//! - [`angle`]: wrapping angles into (−π, π], degrees, snapping;
+//! - [`display`]: numbers for people, never "−0.00";
+//! - [`random`]: one seeded generator, as a stream and as a hash;
+//! - [`error`]: [`FieldError`], bad input named by its path in the file;
+//! - [`feedback`]: [`Feedback`], what a graded exercise says back.
+//!
+//! Nothing here knows about robots; the domain crates build on it.
+
+pub mod angle;
+pub mod display;
+pub mod error;
+pub mod feedback;
+pub mod random;
+
+pub use error::FieldError;
+pub use feedback::Feedback;
+pub use random::SplitMix64;

@@ -1,0 +1,567 @@
+//! The catalogue: every widget a lesson may embed and its parameters.
+//! The widgets themselves live in `kinolab-widgets`, one folder per domain;
+//! each reads its parameters through [`crate::validate`].
+
+use kinolab_control::{Gains, Segment};
+use kinolab_mechanism::catalogue::mechanism;
+use kinolab_wheels::Chassis;
+
+use crate::{Catalogue, Kind, Param, Params, WidgetSchema};
+
+const fn param(
+    name: &'static str,
+    kind: Kind,
+    default: Option<&'static str>,
+    help: &'static str,
+) -> Param {
+    Param {
+        name,
+        kind,
+        default,
+        help,
+    }
+}
+
+const YES_NO: Kind = Kind::YesNo;
+
+/// Three numbers (a pose `x, y, heading_deg`, or gains).
+const fn triple(min: f64, max: f64) -> Kind {
+    Kind::Numbers {
+        min_count: 3,
+        max_count: 3,
+        min,
+        max,
+    }
+}
+
+const ROBOT: Param = param(
+    "robot",
+    Kind::Catalogue {
+        of: Catalogue::Robots,
+    },
+    None,
+    "a robot from the catalogue (default differential-drive); or give `layout`",
+);
+
+const LAYOUT: Param = param(
+    "layout",
+    Kind::Text {
+        example: "f,90,0,0.25,0.1;f,-90,180,0.25,0.1;c,180,0,0.3,0.05,d=0.04",
+        check: check_layout,
+    },
+    None,
+    "wheels as a layout code: `kind,alpha_deg,beta_deg,l,radius` per wheel, `;` between wheels",
+);
+
+fn check_layout(text: &str) -> Result<(), String> {
+    Chassis::from_compact("layout", text)
+        .map(|_| ())
+        .map_err(|e| format!("is not a wheel layout: {e}"))
+}
+
+fn check_plan(text: &str) -> Result<(), String> {
+    Segment::parse_list(text)
+        .map(|_| ())
+        .map_err(|e| format!("is not a plan: {e}"))
+}
+
+/// A whole number of degrees of freedom, 0 to 3.
+const fn degree(name: &'static str, help: &'static str) -> Param {
+    param(name, Kind::Integer { min: 0, max: 3 }, None, help)
+}
+
+pub static WIDGETS: &[WidgetSchema] = &[
+    WidgetSchema {
+        name: "leg-events",
+        summary: "how many leg-event sequences a walker with k legs has",
+        params: &[param(
+            "legs",
+            Kind::Integer { min: 1, max: 12 },
+            Some("2"),
+            "the number of legs k the widget starts with",
+        )],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "support-polygon",
+        summary: "drag feet and the centre of mass; see static stability",
+        params: &[param(
+            "legs",
+            Kind::Integer { min: 3, max: 8 },
+            Some("4"),
+            "how many feet to start with",
+        )],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "scripted-vs-sensing",
+        summary: "a pick-and-place cell in a closed and an open world",
+        params: &[param(
+            "gripper_tolerance",
+            Kind::Number {
+                min: 0.001,
+                max: 0.05,
+            },
+            Some("0.01"),
+            "how far off (m) the gripper may be and still grasp",
+        )],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "wheel-workbench",
+        summary: "place wheels on a chassis; see C1, rank, the three degrees and the ICR",
+        params: &[
+            ROBOT,
+            LAYOUT,
+            degree("goal-maneuverability", "challenge: reach this δM"),
+            degree(
+                "max-steer-inputs",
+                "with goal-maneuverability: use at most this many steering inputs",
+            ),
+            param(
+                "goal-icr",
+                Kind::Numbers {
+                    min_count: 2,
+                    max_count: 2,
+                    min: -5.0,
+                    max: 5.0,
+                },
+                None,
+                "challenge: put the layout's ICR at `x, y` (m, robot frame)",
+            ),
+            degree("goal-mobility", "challenge: reach this δm"),
+            degree("goal-dof", "challenge: reach this DOF"),
+            param(
+                "find-disagreeing",
+                YES_NO,
+                Some("no"),
+                "challenge: pick the wheels that keep a stuck layout from moving",
+            ),
+        ],
+        rules: Some(workbench_rules),
+    },
+    WidgetSchema {
+        name: "wheel-drive",
+        summary: "drive a robot by wheel spins or by twist; trail, ICR, wheel velocities",
+        params: &[
+            ROBOT,
+            LAYOUT,
+            param(
+                "mode",
+                Kind::Choice {
+                    options: &["twist", "wheels"],
+                },
+                Some("twist"),
+                "what the learner sets: the chassis twist, or each wheel's spin",
+            ),
+        ],
+        rules: Some(robot_rules),
+    },
+    WidgetSchema {
+        name: "frame-rotation",
+        summary: "inertial and robot frames and the rotation R(θ) between them",
+        params: &[param(
+            "theta-deg",
+            Kind::Number {
+                min: -180.0,
+                max: 180.0,
+            },
+            Some("30"),
+            "the robot's heading θ to start with, degrees",
+        )],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "speed-profile",
+        summary: "a trapezoidal speed profile: accelerate, cruise, brake over a distance",
+        params: &[
+            param(
+                "distance",
+                Kind::Number {
+                    min: 0.05,
+                    max: 5.0,
+                },
+                Some("1"),
+                "distance to cover, m",
+            ),
+            param(
+                "max-speed",
+                Kind::Number {
+                    min: 0.05,
+                    max: 2.0,
+                },
+                Some("0.5"),
+                "speed limit, m/s",
+            ),
+            param(
+                "max-accel",
+                Kind::Number { min: 0.1, max: 5.0 },
+                Some("1"),
+                "acceleration limit, m/s²",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "controller-playground",
+        summary: "the polar go-to-pose controller: runs, many starts, open vs closed loop, the gain region",
+        params: &[
+            param(
+                "view",
+                Kind::Choice {
+                    options: &["run", "many", "open-vs-closed", "gains"],
+                },
+                Some("run"),
+                "the tab to open",
+            ),
+            param(
+                "start",
+                triple(-360.0, 360.0),
+                Some("-1, 0.5, 0"),
+                "start pose `x, y, heading_deg` (x, y within ±5 m)",
+            ),
+            param(
+                "goal",
+                triple(-360.0, 360.0),
+                Some("0, 0, 0"),
+                "goal pose `x, y, heading_deg` (x, y within ±5 m)",
+            ),
+            param(
+                "gains",
+                triple(-100.0, 100.0),
+                Some("3, 8, -1.5"),
+                "`k_rho, k_alpha, k_beta`",
+            ),
+            param(
+                "direction",
+                Kind::Choice {
+                    options: &["auto", "forward", "backward"],
+                },
+                Some("auto"),
+                "which way the controller may drive",
+            ),
+            param(
+                "slip",
+                Kind::Number { min: 0.0, max: 0.5 },
+                Some("0"),
+                "largest fraction of motion lost to slip",
+            ),
+            param(
+                "push",
+                Kind::Number { min: 0.0, max: 0.2 },
+                Some("0"),
+                "largest random push, m/s",
+            ),
+            param(
+                "seed",
+                Kind::Integer {
+                    min: 0,
+                    max: 1_000_000_000,
+                },
+                Some("1"),
+                "seed of slip and pushes",
+            ),
+            param(
+                "control-rate",
+                Kind::Number {
+                    min: 0.0,
+                    max: 1000.0,
+                },
+                Some("0"),
+                "controller rate, Hz (0: continuous)",
+            ),
+            param(
+                "max-wheel-speed",
+                Kind::Number {
+                    min: 0.0,
+                    max: 100.0,
+                },
+                Some("0"),
+                "wheel-speed limit, rad/s (0: none)",
+            ),
+            param(
+                "plan",
+                Kind::Text {
+                    example: "line 1; arc 0.5 90; turn -90",
+                    check: check_plan,
+                },
+                Some("line 1; arc 0.5 90; line 0.5"),
+                "the open-loop plan: `line METRES`, `arc RADIUS DEGREES`, `turn DEGREES`, `;` between",
+            ),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["reach-within", "spot-unstable"],
+                },
+                None,
+                "a graded exercise",
+            ),
+            param(
+                "time-limit",
+                Kind::Number {
+                    min: 0.5,
+                    max: 30.0,
+                },
+                Some("3"),
+                "reach-within: seconds allowed",
+            ),
+            param(
+                "forward-only",
+                YES_NO,
+                Some("no"),
+                "reach-within: the robot may not reverse",
+            ),
+            param(
+                "sets",
+                Kind::Groups {
+                    size: 3,
+                    min_groups: 2,
+                    min: -100.0,
+                    max: 100.0,
+                },
+                Some("3, 8, -1.5; 3, 2, -1.5; 3, 8, 1.5; 2, 6, -1"),
+                "spot-unstable: gain sets `k_rho, k_alpha, k_beta`, `;` between",
+            ),
+        ],
+        rules: Some(playground_rules),
+    },
+    WidgetSchema {
+        name: "mechanism-viewer",
+        summary: "a mechanism in 3D or plan/side view: joint sliders, drag-to-IK, frames, bounding shapes, model tree",
+        params: &[
+            param(
+                "model",
+                Kind::Catalogue {
+                    of: Catalogue::Mechanisms,
+                },
+                Some("planar-2r"),
+                "the mechanism to show",
+            ),
+            param(
+                "view",
+                Kind::Choice {
+                    options: &["3d", "plan", "side"],
+                },
+                None,
+                "the camera (default: plan for planar arms, side for the rover, else 3d)",
+            ),
+            param(
+                "q",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: 64,
+                    min: -360.0,
+                    max: 360.0,
+                },
+                None,
+                "driven joint values to start from: degrees, or metres for sliding joints",
+            ),
+            param("frames", YES_NO, Some("yes"), "draw every joint's frame"),
+            param(
+                "shapes",
+                YES_NO,
+                Some("no"),
+                "draw bounding capsules and collisions",
+            ),
+            param(
+                "obstacles",
+                Kind::Groups {
+                    size: 3,
+                    min_groups: 1,
+                    min: -10.0,
+                    max: 10.0,
+                },
+                None,
+                "round obstacles `x, y, radius`, `;` between",
+            ),
+            param(
+                "drag",
+                YES_NO,
+                Some("yes"),
+                "drag the tool and let IK follow",
+            ),
+            param("tree", YES_NO, Some("no"), "open the model tree"),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["reach", "spot-singular"],
+                },
+                None,
+                "a graded exercise",
+            ),
+            param(
+                "target",
+                Kind::Numbers {
+                    min_count: 2,
+                    max_count: 3,
+                    min: -10.0,
+                    max: 10.0,
+                },
+                None,
+                "reach: the point `x, y` or `x, y, z` (m)",
+            ),
+            param(
+                "tolerance",
+                Kind::Number {
+                    min: 0.0001,
+                    max: 0.999,
+                },
+                Some("0.01"),
+                "reach: how close counts, m",
+            ),
+            param(
+                "sets",
+                Kind::Groups {
+                    size: 0,
+                    min_groups: 2,
+                    min: -360.0,
+                    max: 360.0,
+                },
+                None,
+                "spot-singular: joint values to judge, `;` between (one value per driven joint)",
+            ),
+        ],
+        rules: Some(viewer_rules),
+    },
+    WidgetSchema {
+        name: "dh-link",
+        summary: "one DH link built motion by motion, with its matrix; match a target frame",
+        params: &[
+            param(
+                "convention",
+                Kind::Choice {
+                    options: &["standard", "modified"],
+                },
+                Some("standard"),
+                "standard DH, or modified (Craig)",
+            ),
+            param(
+                "row",
+                dh_row(),
+                Some("0, 0, 0, 0"),
+                "the link to start from: `a, alpha_deg, d, theta_deg`",
+            ),
+            param(
+                "target",
+                dh_row(),
+                None,
+                "exercise: the frame to match, as a DH row",
+            ),
+        ],
+        rules: Some(dh_rules),
+    },
+];
+
+/// `a, alpha_deg, d, theta_deg`, with a and d within ±2 m (angles are
+/// checked to ±360°, lengths more tightly by the rule below).
+const fn dh_row() -> Kind {
+    Kind::Numbers {
+        min_count: 4,
+        max_count: 4,
+        min: -360.0,
+        max: 360.0,
+    }
+}
+
+fn dh_rules(p: &Params) -> Result<(), String> {
+    for key in ["row", "target"] {
+        if let Some([a, _, d, _]) = p.numbers(key)
+            && (a.abs() > 2.0 || d.abs() > 2.0)
+        {
+            return Err(format!("parameter `{key}`: a and d must be within ±2 m"));
+        }
+    }
+    Ok(())
+}
+
+/// Not both `robot` and `layout`.
+fn robot_rules(p: &Params) -> Result<(), String> {
+    if p.given("robot") && p.given("layout") {
+        return Err("give either `robot` or `layout`, not both".into());
+    }
+    Ok(())
+}
+
+/// The robot, from `robot`, `layout` or the default.
+pub fn robot_of(p: &Params) -> Result<Chassis, String> {
+    match (p.text("layout"), p.choice("robot")) {
+        (Some(code), _) => Chassis::from_compact("Layout", code).map_err(|e| e.to_string()),
+        (None, id) => kinolab_wheels::catalogue::robot(id.unwrap_or("differential-drive"))
+            .map_err(|e| e.to_string()),
+    }
+}
+
+fn workbench_rules(p: &Params) -> Result<(), String> {
+    robot_rules(p)?;
+    let challenges = [
+        "goal-maneuverability",
+        "goal-icr",
+        "goal-mobility",
+        "goal-dof",
+    ]
+    .iter()
+    .filter(|c| p.given(c))
+    .count()
+        + usize::from(p.yes("find-disagreeing"));
+    if challenges > 1 {
+        return Err("a workbench takes at most one challenge".into());
+    }
+    if p.given("max-steer-inputs") && !p.given("goal-maneuverability") {
+        return Err("`max-steer-inputs` goes with `goal-maneuverability`".into());
+    }
+    if p.yes("find-disagreeing") && robot_of(p)?.disagreement().is_none() {
+        return Err("`find-disagreeing` needs a layout that cannot move".into());
+    }
+    Ok(())
+}
+
+fn playground_rules(p: &Params) -> Result<(), String> {
+    for key in ["start", "goal"] {
+        if let Some([x, y, _]) = p.numbers(key)
+            && (x.abs() > 5.0 || y.abs() > 5.0)
+        {
+            return Err(format!("parameter `{key}`: x and y must be within ±5 m"));
+        }
+    }
+    let gains = p.numbers("gains").unwrap_or_default();
+    if let [r, a, b] = gains {
+        Gains::new(*r, *a, *b).map_err(|e| format!("parameter `gains`: {e}"))?;
+    }
+    let task = p.choice("task");
+    for key in ["time-limit", "forward-only"] {
+        if p.given(key) && task != Some("reach-within") {
+            return Err(format!("`{key}` goes with `task: reach-within`"));
+        }
+    }
+    if p.given("sets") && task != Some("spot-unstable") {
+        return Err("`sets` goes with `task: spot-unstable`".into());
+    }
+    Ok(())
+}
+
+fn viewer_rules(p: &Params) -> Result<(), String> {
+    let model = mechanism(p.choice("model").unwrap_or("planar-2r")).map_err(|e| e.to_string())?;
+    let driven = (0..model.dof()).filter(|&v| model.is_driven(v)).count();
+    if let Some(q) = p.numbers("q")
+        && q.len() != driven
+    {
+        return Err(format!(
+            "`q` needs {driven} values (one per driven joint of `{}`), got {}",
+            model.name(),
+            q.len()
+        ));
+    }
+    match p.choice("task") {
+        Some("reach") if p.numbers("target").is_none() => {
+            Err("`task: reach` needs `target: x, y` or `target: x, y, z`".into())
+        }
+        Some("spot-singular") => match p.groups("sets") {
+            None => Err("`task: spot-singular` needs `sets: q1, q2; q1, q2; …`".into()),
+            Some(sets) if sets.iter().any(|s| s.len() != driven) => Err(format!(
+                "each group in `sets` needs {driven} values, one per driven joint"
+            )),
+            Some(_) => Ok(()),
+        },
+        _ => Ok(()),
+    }
+}

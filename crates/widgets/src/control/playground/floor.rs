@@ -1,0 +1,142 @@
+//! The playground's floor: a grid fitted around what matters, and the
+//! start and goal poses as named handles (drag the dot to move a pose,
+//! its ring to turn it; or Tab to a handle and use the arrow keys).
+
+use egui::{Painter, Sense};
+use kinolab_common::angle::snap;
+use kinolab_control::Pose;
+
+use super::Playground;
+use crate::control::field;
+use crate::draw::{PlaneView, handle};
+use crate::theme;
+
+/// Which poses a floor lets the learner drag.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Grabs {
+    StartAndGoal,
+    Start,
+    Goal,
+}
+
+/// The four handles a pose can have.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Part {
+    Place,
+    Heading,
+}
+
+impl Playground {
+    /// The floor fitted around `keep`, with the handles `grabs` allows.
+    /// The view stays put while the learner drags, and until the pointer
+    /// leaves the floor, so nothing jumps from under it.
+    pub(super) fn floor(
+        &mut self,
+        ui: &mut egui::Ui,
+        size: egui::Vec2,
+        grabs: Grabs,
+        keep: &[Pose],
+    ) -> (Painter, PlaneView) {
+        let salt = ui.next_auto_id();
+        let (response, painter) = ui.allocate_painter(size, Sense::hover());
+        let rect = response.rect;
+        let painter = painter.with_clip_rect(rect);
+        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        let view = self.frozen.unwrap_or_else(|| {
+            let (min, max) = field::bounds(keep, 0.7);
+            PlaneView::fit(rect, min, max)
+        });
+        field::floor(&painter, &view, rect, ui.visuals().text_color());
+        let mut held = false;
+        if grabs != Grabs::Goal {
+            held |= self.pose_handles(ui, salt, &view, true);
+        }
+        if grabs != Grabs::Start {
+            held |= self.pose_handles(ui, salt, &view, false);
+        }
+        if held {
+            self.frozen = Some(view);
+        } else if !response.contains_pointer() {
+            self.frozen = None;
+        }
+        (painter, view)
+    }
+
+    /// The dot and ring of the start (or goal) pose; true while held.
+    fn pose_handles(
+        &mut self,
+        ui: &mut egui::Ui,
+        salt: egui::Id,
+        view: &PlaneView,
+        start: bool,
+    ) -> bool {
+        let name = if start { "Start" } else { "Goal" };
+        let mut held = false;
+        for part in [Part::Heading, Part::Place] {
+            let pose = if start { self.set.start } else { self.set.goal };
+            let (at, label) = match part {
+                Part::Place => (view.to_screen([pose.x, pose.y]), format!("{name} position")),
+                Part::Heading => (
+                    view.to_screen(field::heading_tip(&pose)),
+                    format!("{name} heading"),
+                ),
+            };
+            let h = handle(ui, salt.with((name, part as u8)), at, 9.0, &label);
+            held |= h.held();
+            if h.dragged() {
+                let to = h.response.interact_pointer_pos().unwrap_or(at + h.moved);
+                let moved = drag_pose(pose, part, view.to_world(to));
+                if start {
+                    self.set.start = moved;
+                } else {
+                    self.set.goal = moved;
+                }
+                self.cursor = 0.0;
+                self.playing = true;
+            }
+        }
+        held
+    }
+
+    pub(super) fn draw_goal(&self, ui: &egui::Ui, painter: &Painter, view: &PlaneView) {
+        field::pose(
+            painter,
+            view,
+            &self.set.goal,
+            theme::good_color(ui),
+            "goal",
+            true,
+        );
+    }
+
+    pub(super) fn draw_start(&self, ui: &egui::Ui, painter: &Painter, view: &PlaneView) {
+        let ink = ui.visuals().text_color().gamma_multiply(0.7);
+        field::pose(painter, view, &self.set.start, ink, "start", true);
+    }
+}
+
+/// A pose with its place moved to `to` (snapped to 5 cm), or turned to
+/// face `to` (in 5° steps).
+fn drag_pose(pose: Pose, part: Part, to: [f64; 2]) -> Pose {
+    match part {
+        Part::Place => Pose::new(snap(to[0], 0.05), snap(to[1], 0.05), pose.theta),
+        Part::Heading => {
+            let heading = snap((to[1] - pose.y).atan2(to[0] - pose.x).to_degrees(), 5.0);
+            Pose::new(pose.x, pose.y, heading.to_radians())
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dragging_snaps_places_and_headings() {
+        let p = Pose::new(0.0, 0.0, 0.0);
+        let moved = drag_pose(p, Part::Place, [0.123, -0.26]);
+        assert!((moved.x - 0.1).abs() < 1e-12 && (moved.y + 0.25).abs() < 1e-12);
+        let turned = drag_pose(p, Part::Heading, [0.0, 1.0]);
+        assert!((turned.theta - std::f64::consts::FRAC_PI_2).abs() < 1e-12 && turned.x == 0.0);
+    }
+}

@@ -1,0 +1,225 @@
+//! The gains: sliders, the stability sentence, real-world effects, and the
+//! (k_α, k_β) plane with the stable regions and the conditions.
+
+use egui::{RichText, Stroke};
+use egui_plot::{Legend, Plot, PlotUi, Points, Polygon};
+use kinolab_common::angle::snap;
+use kinolab_common::display::fixed;
+use kinolab_control::{Direction, Gains};
+
+use super::Playground;
+use crate::theme;
+
+fn slider(
+    ui: &mut egui::Ui,
+    value: &mut f64,
+    range: std::ops::RangeInclusive<f64>,
+    text: &str,
+    decimals: usize,
+) {
+    ui.add(
+        egui::Slider::new(value, range)
+            .text(text)
+            .step_by(10f64.powi(-(decimals as i32)))
+            .fixed_decimals(decimals),
+    );
+}
+
+fn direction_name(d: Direction) -> &'static str {
+    match d {
+        Direction::Auto => "auto",
+        Direction::Forward => "forward",
+        Direction::Backward => "backward",
+    }
+}
+
+/// The plane's right and bottom edges.
+const A_MAX: f64 = 20.0;
+const B_MIN: f64 = -10.0;
+
+impl Playground {
+    pub(super) fn gain_sliders(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            let g = &mut self.set.gains;
+            slider(ui, &mut g[0], -2.0..=10.0, "k_ρ", 1);
+            slider(ui, &mut g[1], -5.0..=20.0, "k_α", 1);
+            slider(ui, &mut g[2], -10.0..=5.0, "k_β", 1);
+            egui::ComboBox::from_id_salt(ui.scope_id().with("direction"))
+                .selected_text(format!("drive: {}", direction_name(self.set.direction)))
+                .show_ui(ui, |ui| {
+                    for d in [Direction::Auto, Direction::Forward, Direction::Backward] {
+                        ui.selectable_value(&mut self.set.direction, d, direction_name(d));
+                    }
+                });
+        });
+    }
+
+    pub(super) fn stability_line(&self, ui: &mut egui::Ui) {
+        let (text, color) = match self.set.gains() {
+            Ok(g) => {
+                let s = g.stability();
+                let color = if s.strongly_stable {
+                    theme::good_color(ui)
+                } else if s.locally_stable {
+                    theme::accent(ui)
+                } else {
+                    theme::warn_color(ui)
+                };
+                (s.explanation, color)
+            }
+            Err(e) => (e, theme::warn_color(ui)),
+        };
+        ui.label(RichText::new(text).color(color));
+    }
+
+    pub(super) fn effects(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.set;
+        let open = s.slip > 0.0 || s.push > 0.0 || s.control_rate > 0.0 || s.max_wheel_speed > 0.0;
+        egui::CollapsingHeader::new("Real-world effects: slip, pushes, control rate, wheel limit")
+            .id_salt(ui.scope_id().with("effects"))
+            .default_open(open)
+            .show(ui, |ui| {
+                ui.horizontal_wrapped(|ui| {
+                    slider(ui, &mut s.slip, 0.0..=0.5, "slip", 2);
+                    slider(ui, &mut s.push, 0.0..=0.2, "push (m/s)", 2);
+                    ui.add(
+                        egui::DragValue::new(&mut s.seed)
+                            .range(0..=999_999)
+                            .prefix("seed "),
+                    );
+                    if ui.button("new seed").clicked() {
+                        s.seed = kinolab_common::random::hash(s.seed, 0, 0) % 1_000_000;
+                    }
+                });
+                ui.horizontal_wrapped(|ui| {
+                    slider(
+                        ui,
+                        &mut s.control_rate,
+                        0.0..=100.0,
+                        "controller rate (Hz, 0 = continuous)",
+                        0,
+                    );
+                    slider(
+                        ui,
+                        &mut s.max_wheel_speed,
+                        0.0..=60.0,
+                        "wheel limit (rad/s, 0 = none)",
+                        0,
+                    );
+                });
+            });
+    }
+
+    pub(super) fn gains_tab(&mut self, ui: &mut egui::Ui) {
+        let Ok(g) = self.set.gains() else { return };
+        let width = ui.available_width().min(900.0);
+        let mut picked = None;
+        let (good, accent) = (theme::good_color(ui), theme::accent(ui));
+        Plot::new(ui.scope_id().with("gain-plane"))
+            .width(width)
+            .height(300.0)
+            .legend(Legend::default().position(egui_plot::Corner::LeftBottom))
+            .x_axis_label("k_α")
+            .y_axis_label("k_β")
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .allow_boxed_zoom(false)
+            .allow_double_click_reset(false)
+            .include_x(-2.0)
+            .include_x(A_MAX)
+            .include_y(B_MIN)
+            .include_y(4.0)
+            .show(ui, |plot| {
+                regions(plot, g.k_rho, good);
+                plot.points(
+                    Points::new("your gains", vec![[g.k_alpha, g.k_beta]])
+                        .radius(6.0)
+                        .color(accent),
+                );
+                let response = plot.response();
+                if (response.clicked() || response.dragged())
+                    && let Some(p) = plot.pointer_coordinate()
+                {
+                    picked = Some([snap(p.x, 0.1), snap(p.y, 0.1)]);
+                }
+            });
+        if let Some([a, b]) = picked {
+            self.set.gains[1] = a.clamp(-5.0, 20.0);
+            self.set.gains[2] = b.clamp(-10.0, 5.0);
+        }
+        ui.label(
+            RichText::new(format!(
+                "The plane at k_ρ = {}. Click or drag in it to pick k_α and k_β.",
+                fixed(g.k_rho, 1)
+            ))
+            .small(),
+        );
+        conditions(ui, &g);
+    }
+}
+
+/// The locally and strongly stable regions for this k_ρ.
+fn regions(plot: &mut PlotUi<'_>, k_rho: f64, good: egui::Color32) {
+    if k_rho <= 0.0 {
+        return;
+    }
+    let local = vec![[k_rho, 0.0], [A_MAX, 0.0], [A_MAX, B_MIN], [k_rho, B_MIN]];
+    plot.polygon(
+        Polygon::new("locally stable", local)
+            .fill_color(good.gamma_multiply(0.3))
+            .stroke(Stroke::new(1.0, good.gamma_multiply(0.5))),
+    );
+    // Strong: k_β > (3/5)(2 k_ρ / π − k_α), inside the local region.
+    let line = |a: f64| 0.6 * (2.0 * k_rho / std::f64::consts::PI - a);
+    let steps = 40;
+    let mut strong: Vec<[f64; 2]> = (0..=steps)
+        .map(|i| {
+            let a = k_rho + (A_MAX - k_rho) * f64::from(i) / f64::from(steps);
+            [a, line(a).clamp(B_MIN, 0.0)]
+        })
+        .collect();
+    strong.push([A_MAX, 0.0]);
+    strong.push([k_rho, 0.0]);
+    plot.polygon(
+        Polygon::new("strongly stable", strong)
+            .fill_color(good.gamma_multiply(0.6))
+            .stroke(Stroke::new(1.0, good)),
+    );
+}
+
+/// Each condition with its value, and the eigenvalues.
+fn conditions(ui: &mut egui::Ui, g: &Gains) {
+    let s = g.stability();
+    egui::Grid::new(ui.scope_id().with("conditions"))
+        .striped(true)
+        .show(ui, |ui| {
+            for c in &s.conditions {
+                let (mark, color) = if c.holds {
+                    ("holds", theme::good_color(ui))
+                } else {
+                    ("fails", theme::warn_color(ui))
+                };
+                ui.label(RichText::new(mark).color(color));
+                ui.label(RichText::new(c.expression).monospace());
+                ui.label(fixed(c.value, 3));
+                ui.end_row();
+            }
+        });
+    let eig: Vec<String> = s
+        .eigenvalues
+        .iter()
+        .map(|[re, im]| {
+            if fixed(*im, 3) == "0.000" {
+                fixed(*re, 3)
+            } else {
+                let sign = if *im < 0.0 { "−" } else { "+" };
+                format!("{} {sign} {}i", fixed(*re, 3), fixed(im.abs(), 3))
+            }
+        })
+        .collect();
+    ui.label(format!(
+        "Eigenvalues of the linearised loop: {}.",
+        eig.join(", ")
+    ));
+}

@@ -1,0 +1,233 @@
+//! The playground's tabs that show runs: one run with its plots, many
+//! starts at once, and open loop against closed loop.
+
+use egui::{RichText, Stroke, vec2};
+use kinolab_common::display::fixed;
+use kinolab_control::{Pose, Sample, Trajectory};
+
+use super::Playground;
+use super::floor::Grabs;
+use crate::control::field;
+use crate::theme;
+
+impl Playground {
+    pub(super) fn run_tab(&mut self, ui: &mut egui::Ui) {
+        let width = ui.available_width().min(900.0);
+        let keep = [self.set.start, self.set.goal];
+        let (painter, view) = self.floor(ui, vec2(width, 320.0), Grabs::StartAndGoal, &keep);
+        self.draw_goal(ui, &painter, &view);
+        self.draw_start(ui, &painter, &view);
+        let t = match self.run.clone() {
+            Some(Ok(t)) => t,
+            Some(Err(e)) => {
+                ui.label(RichText::new(e).color(theme::warn_color(ui)));
+                return;
+            }
+            None => return,
+        };
+        let accent = theme::accent(ui);
+        field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
+        // Ghosts every second, then the robot at the cursor.
+        let ghost = ui.visuals().text_color().gamma_multiply(0.15);
+        for s in t
+            .samples
+            .iter()
+            .filter(|s| s.t > 0.0 && (s.t.fract() < 1e-9 || 1.0 - s.t.fract() < 1e-9))
+        {
+            field::robot(&painter, &view, &s.pose, ghost);
+        }
+        if let Some(s) = field::at_time(&t.samples, self.cursor) {
+            field::robot(&painter, &view, &s.pose, accent);
+        }
+        ui.label(
+            RichText::new("Drag the dots to move start and goal, the rings to turn them.").small(),
+        );
+        self.playback(ui, t.samples.last().map_or(0.0, |s| s.t));
+        ui.label(summary(&t));
+        self.plots(ui, &t, width);
+        self.exports(ui, &[("closed", &t)]);
+    }
+
+    /// Play, pause and scrub through a run.
+    pub(super) fn playback(&mut self, ui: &mut egui::Ui, end: f64) {
+        if self.playing {
+            self.cursor += f64::from(ui.input(|i| i.stable_dt)).clamp(0.0, 0.1);
+            if self.cursor >= end {
+                self.cursor = end;
+                self.playing = false;
+            } else {
+                ui.ctx().request_repaint();
+            }
+        }
+        ui.horizontal(|ui| {
+            let label = if self.playing { "Pause" } else { "Play" };
+            if ui.button(label).clicked() {
+                if !self.playing && self.cursor >= end {
+                    self.cursor = 0.0;
+                }
+                self.playing = !self.playing;
+            }
+            ui.add(
+                egui::Slider::new(&mut self.cursor, 0.0..=end)
+                    .text("t (s)")
+                    .fixed_decimals(2),
+            );
+        });
+    }
+
+    pub(super) fn many_tab(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.add(
+                egui::Slider::new(&mut self.set.many_count, 4..=100).text("starts on a 1 m circle"),
+            );
+            ui.add(
+                egui::Slider::new(&mut self.set.many_heading_deg, -180.0..=180.0)
+                    .text("start heading (°)")
+                    .step_by(5.0),
+            );
+        });
+        let width = ui.available_width().min(900.0);
+        // The 1 m circle of starts and a little room.
+        let ring: Vec<Pose> = [[-0.6, -0.6], [0.6, 0.6]]
+            .iter()
+            .map(|[dx, dy]| Pose::new(self.set.goal.x + dx, self.set.goal.y + dy, 0.0))
+            .collect();
+        let (painter, view) = self.floor(ui, vec2(width, 380.0), Grabs::Goal, &ring);
+        let (accent, warn) = (theme::accent(ui), theme::warn_color(ui));
+        let runs = match self.many.clone() {
+            Some(Ok(runs)) => runs,
+            Some(Err(e)) => {
+                ui.label(RichText::new(e).color(warn));
+                return;
+            }
+            None => return,
+        };
+        for t in &runs {
+            let color = if t.backward { warn } else { accent };
+            field::path(
+                &painter,
+                &view,
+                &t.samples,
+                Stroke::new(1.3, color.gamma_multiply(0.8)),
+            );
+            if let Some(s) = t.samples.first() {
+                field::pose(
+                    &painter,
+                    &view,
+                    &s.pose,
+                    color.gamma_multiply(0.6),
+                    "",
+                    false,
+                );
+            }
+        }
+        self.draw_goal(ui, &painter, &view);
+        let reached = runs.iter().filter(|t| t.reached).count();
+        let slowest = runs
+            .iter()
+            .filter_map(|t| t.time_to_goal)
+            .fold(0.0, f64::max);
+        ui.label(format!(
+            "{reached} of {} starts reach the goal within {} s (slowest {} s). Blue drove forward, red rear first.",
+            runs.len(),
+            kinolab_control::batch::PREVIEW_DURATION,
+            fixed(slowest, 1)
+        ));
+    }
+
+    pub(super) fn compare_tab(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            let label = ui.label("Plan:");
+            ui.add(
+                egui::TextEdit::singleline(&mut self.set.plan)
+                    .desired_width(360.0)
+                    .font(egui::TextStyle::Monospace),
+            )
+            .labelled_by(label.id);
+        });
+        ui.label(RichText::new("Segments: line METRES, arc RADIUS DEGREES, turn DEGREES, separated by semicolons. Raise the slip under real-world effects.").small());
+        let (plan, open, closed) = match self.compare.clone() {
+            Some(Ok(c)) => c,
+            Some(Err(e)) => {
+                ui.label(RichText::new(e).color(theme::warn_color(ui)));
+                return;
+            }
+            None => return,
+        };
+        // The plan as drawn on paper: the nominal pose at each sample time.
+        let nominal: Vec<Sample> = open
+            .samples
+            .iter()
+            .map(|s| Sample {
+                pose: plan.nominal(s.t),
+                ..*s
+            })
+            .collect();
+        let mut keep: Vec<Pose> = nominal.iter().step_by(20).map(|s| s.pose).collect();
+        keep.push(self.set.start);
+        let half = ((ui.available_width().min(900.0) - 12.0) / 2.0).max(150.0);
+        ui.horizontal_top(|ui| {
+            for (title, t) in [("Open loop", &open), ("Closed loop", &closed)] {
+                ui.vertical(|ui| {
+                    ui.label(RichText::new(title).strong());
+                    self.compare_floor(ui, half, &keep, &nominal, &plan.end(), t);
+                });
+            }
+        });
+        ui.label(RichText::new("Grey: the plan as drawn on paper. Both robots meet the same slip and pushes (same seed).").small());
+        self.playback(ui, open.samples.last().map_or(0.0, |s| s.t));
+        self.exports(ui, &[("open", &open), ("closed", &closed)]);
+    }
+
+    /// One side of the comparison: the plan in grey, the run, the robot.
+    fn compare_floor(
+        &mut self,
+        ui: &mut egui::Ui,
+        width: f32,
+        keep: &[Pose],
+        nominal: &[Sample],
+        end: &Pose,
+        t: &Trajectory,
+    ) {
+        let (painter, view) = self.floor(ui, vec2(width, 280.0), Grabs::Start, keep);
+        let accent = theme::accent(ui);
+        field::path(
+            &painter,
+            &view,
+            nominal,
+            Stroke::new(1.5, ui.visuals().text_color().gamma_multiply(0.3)),
+        );
+        field::pose(&painter, &view, end, theme::good_color(ui), "goal", false);
+        self.draw_start(ui, &painter, &view);
+        field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
+        if let Some(s) = field::at_time(&t.samples, self.cursor) {
+            field::robot(&painter, &view, &s.pose, accent);
+        }
+        ui.label(format!(
+            "Ends {} cm and {}° from the goal.",
+            fixed(t.final_position_error * 100.0, 1),
+            fixed(t.final_heading_error.to_degrees().abs(), 1)
+        ));
+    }
+}
+
+/// A run in one sentence.
+pub(super) fn summary(t: &Trajectory) -> String {
+    let reached = match t.time_to_goal {
+        Some(s) => format!(
+            "Reached (within 1 mm and 0.1°, and stayed) after {} s",
+            fixed(s, 2)
+        ),
+        None => format!(
+            "Not reached: ends {} mm and {}° off",
+            fixed(t.final_position_error * 1000.0, 1),
+            fixed(t.final_heading_error.to_degrees().abs(), 1)
+        ),
+    };
+    format!(
+        "{reached}, driving {}. Path {} m; fastest wheel {} rad/s.",
+        if t.backward { "rear first" } else { "forward" },
+        fixed(t.path_length, 2),
+        fixed(t.peak_wheel_speed, 1)
+    )
+}

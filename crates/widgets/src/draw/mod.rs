@@ -1,0 +1,14 @@
+//! The drawing pieces every widget shares: one world↔screen view for
+//! plane drawings ([`PlaneView`]), draggable handles with accessible names
+//! ([`handle`]), grids and axes, a small 3D camera ([`scene3d`]), and
+//! labels that keep out of each other's way ([`labels`]).
+
+mod grid;
+mod handle;
+pub mod labels;
+pub mod scene3d;
+mod view;
+
+pub use grid::{axes, grid, nice_step};
+pub use handle::{Handle, handle};
+pub use view::{PlaneView, local, placed, placed_dir};

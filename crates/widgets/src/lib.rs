@@ -1,0 +1,34 @@
+//! Kinolab's live widgets, on egui alone.
+//!
+//! A lesson names a widget in a ` ```widget ` block; [`registry::create`]
+//! checks the block against the widget's schema (`kinolab-schema`) and
+//! builds it. Widgets are grouped by what they teach:
+//!
+//! - [`locomotion`]: legs, balance and leg events;
+//! - [`autonomy`]: closed and open worlds;
+//! - [`wheels`]: wheel constraints, drive configurations, frames;
+//! - [`control`]: speed profiles and the go-to-pose controller;
+//! - [`mechanism`]: DH links and mechanism models.
+//!
+//! Shared pieces: [`widget`] (the trait every widget implements and the
+//! small helpers they share), [`draw`] (one world↔screen view, draggable
+//! handles with accessible names, grids, a 3D camera), [`link`] (widget
+//! state in a link), [`export`] (files a widget asks the host to save) and
+//! [`theme`]. Every number a widget shows comes from a core crate.
+//!
+//! Nothing here knows about windows or browsers: the lab's shell
+//! (`kinolab-app`) hosts these widgets, as egui's demo app hosts its demos.
+
+pub mod autonomy;
+pub mod control;
+pub mod draw;
+pub mod export;
+pub mod link;
+pub mod locomotion;
+pub mod mechanism;
+pub mod registry;
+pub mod theme;
+pub mod wheels;
+pub mod widget;
+
+pub use widget::LabWidget;

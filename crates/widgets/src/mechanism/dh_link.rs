@@ -1,0 +1,272 @@
+//! One Denavit–Hartenberg link, built motion by motion: frame i−1, the
+//! frames after each of the four elementary motions, frame i, and the 4×4
+//! matrix. With a target row, a dashed frame shows where frame i must land
+//! and the core checks the learner's row by comparing transforms.
+
+use egui::{Painter, Rect, RichText, Sense, Stroke, vec2};
+use kinolab_common::Feedback;
+use kinolab_common::display::signed;
+use kinolab_mechanism::dh::{Convention, link, steps};
+use kinolab_mechanism::exercise::Task;
+use kinolab_mechanism::{Pose, Vector3};
+
+use crate::draw::labels::Labels;
+use crate::draw::scene3d::{AXIS_COLOURS, Camera, ViewKind, draw_frame, draw_grid};
+use crate::link as state_link;
+use crate::widget::{LabWidget, Params, feedback_ui};
+
+struct DhLink {
+    convention: Convention,
+    /// a (m), α (°), d (m), θ (°).
+    row: [f64; 4],
+    initial: [f64; 4],
+    camera: Camera,
+    task: Option<Task>,
+    feedback: Option<Feedback>,
+}
+
+fn row_of(p: &Params, name: &str) -> Option<[f64; 4]> {
+    match p.numbers(name)? {
+        [a, alpha, d, theta] => Some([*a, *alpha, *d, *theta]),
+        _ => None,
+    }
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let convention = match p.choice("convention") {
+        Some("modified") => Convention::ModifiedDh,
+        _ => Convention::StandardDh,
+    };
+    let row = row_of(p, "row").unwrap_or_default();
+    let task = row_of(p, "target").map(|[a, alpha, d, theta]| Task::DhRow {
+        convention,
+        target: [a, alpha.to_radians(), d, theta.to_radians()],
+    });
+    Ok(Box::new(DhLink {
+        convention,
+        row,
+        initial: row,
+        camera: Camera::new(ViewKind::Orbit, [0.3, 0.0, 0.2], 0.8),
+        task,
+        feedback: None,
+    }))
+}
+
+const NAMES_STANDARD: [&str; 4] = ["Rz(θ)", "Tz(d)", "Tx(a)", "Rx(α)"];
+const NAMES_MODIFIED: [&str; 4] = ["Rx(α)", "Tx(a)", "Rz(θ)", "Tz(d)"];
+
+impl DhLink {
+    fn radians(&self) -> [f64; 4] {
+        [
+            self.row[0],
+            self.row[1].to_radians(),
+            self.row[2],
+            self.row[3].to_radians(),
+        ]
+    }
+
+    /// The convention's formula, the view buttons and the four sliders.
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label(match self.convention {
+                Convention::StandardDh => {
+                    "standard DH: frame i = frame i−1 · Rz(θ) · Tz(d) · Tx(a) · Rx(α)"
+                }
+                Convention::ModifiedDh => {
+                    "modified DH: frame i = frame i−1 · Rx(α) · Tx(a) · Rz(θ) · Tz(d)"
+                }
+            });
+            self.camera.buttons(ui);
+        });
+        let mut changed = false;
+        egui::Grid::new(ui.scope_id().with("dh"))
+            .num_columns(2)
+            .show(ui, |ui| {
+                for (k, (label, range, unit)) in [
+                    ("a", -1.0..=1.0, " m"),
+                    ("α", -180.0..=180.0, "°"),
+                    ("d", -1.0..=1.0, " m"),
+                    ("θ", -180.0..=180.0, "°"),
+                ]
+                .into_iter()
+                .enumerate()
+                {
+                    let name = ui.label(label);
+                    let angle = k % 2 == 1;
+                    let slider = egui::Slider::new(&mut self.row[k], range)
+                        .suffix(unit)
+                        .fixed_decimals(if angle { 0 } else { 2 })
+                        .step_by(if angle { 1.0 } else { 0.01 });
+                    changed |= ui.add(slider).labelled_by(name.id).changed();
+                    ui.end_row();
+                }
+            });
+        if changed {
+            self.feedback = None;
+        }
+    }
+
+    /// Frame i−1, the intermediate frames, the target and frame i.
+    fn scene(&self, ui: &egui::Ui, painter: &Painter, rect: Rect) -> Pose {
+        let ink = ui.visuals().text_color();
+        let [a, alpha, d, theta] = self.radians();
+        let names = match self.convention {
+            Convention::StandardDh => NAMES_STANDARD,
+            Convention::ModifiedDh => NAMES_MODIFIED,
+        };
+        draw_grid(painter, &self.camera, rect, ink.gamma_multiply(0.08));
+        draw_frame(
+            painter,
+            &self.camera,
+            rect,
+            &Pose::identity(),
+            0.25,
+            1.0,
+            2.5,
+        );
+        let mut labels = Labels::default();
+        let origin = self.camera.project(rect, &Vector3::zeros()).0;
+        labels.add(origin, "i−1", ink);
+        // The path through the intermediate frames.
+        let mut at = Pose::identity();
+        for (k, step) in steps(self.convention, a, alpha, d, theta)
+            .iter()
+            .enumerate()
+        {
+            let before = at.translation.vector;
+            at *= step;
+            let (p0, _) = self.camera.project(rect, &before);
+            let (p1, _) = self.camera.project(rect, &at.translation.vector);
+            painter.line_segment([p0, p1], Stroke::new(1.5, ink.gamma_multiply(0.5)));
+            if k < 3 {
+                draw_frame(painter, &self.camera, rect, &at, 0.12, 0.35, 1.0);
+                labels.add(p1, format!("after {}", names[k]), ink.gamma_multiply(0.5));
+            }
+        }
+        if let Some(Task::DhRow { convention, target }) = &self.task {
+            let goal = link(*convention, target[0], target[1], target[2], target[3]);
+            self.dashed_frame(painter, rect, &goal);
+            let at = self.camera.project(rect, &goal.translation.vector).0;
+            labels.add(at, "target", ink.gamma_multiply(0.7));
+        }
+        let frame_i = link(self.convention, a, alpha, d, theta);
+        draw_frame(painter, &self.camera, rect, &frame_i, 0.25, 1.0, 3.0);
+        labels.add(
+            self.camera.project(rect, &frame_i.translation.vector).0,
+            "i",
+            ink,
+        );
+        labels.draw(painter, &egui::FontId::proportional(12.0));
+        frame_i
+    }
+
+    fn dashed_frame(&self, painter: &Painter, rect: Rect, pose: &Pose) {
+        let (o, _) = self.camera.project(rect, &pose.translation.vector);
+        for (k, colour) in AXIS_COLOURS.iter().enumerate() {
+            let mut axis = Vector3::zeros();
+            axis[k] = 0.25;
+            let (tip, _) = self
+                .camera
+                .project(rect, &(pose.rotation * axis + pose.translation.vector));
+            painter.extend(egui::Shape::dashed_line(
+                &[o, tip],
+                Stroke::new(2.0, colour.gamma_multiply(0.7)),
+                5.0,
+                4.0,
+            ));
+        }
+    }
+
+    fn exercise(&mut self, ui: &mut egui::Ui) {
+        let radians = self.radians();
+        let Some(task) = &self.task else { return };
+        let feedback = &mut self.feedback;
+        ui.group(|ui| {
+            ui.label(RichText::new(format!("Exercise: {}", task.describe())).strong());
+            if ui.button("Check").clicked() {
+                *feedback = Some(Feedback::from(task.check_row(radians)));
+            }
+            feedback_ui(ui, feedback.as_ref());
+        });
+    }
+}
+
+/// A 4×4 matrix, three decimals, never "−0.000".
+fn matrix(ui: &mut egui::Ui, h: &kinolab_mechanism::Matrix4<f64>) {
+    egui::Grid::new(ui.scope_id().with("m"))
+        .spacing(vec2(10.0, 2.0))
+        .show(ui, |ui| {
+            for r in 0..4 {
+                for c in 0..4 {
+                    ui.label(RichText::new(signed(h[(r, c)], 3)).monospace());
+                }
+                ui.end_row();
+            }
+        });
+}
+
+impl LabWidget for DhLink {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        self.controls(ui);
+        let size = vec2(ui.available_width().min(720.0), 300.0);
+        let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
+        let rect = response.rect;
+        self.camera.handle(ui, &response, true);
+        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        let frame_i = self.scene(ui, &painter, rect);
+        painter.text(
+            rect.left_bottom() + vec2(8.0, -8.0),
+            egui::Align2::LEFT_BOTTOM,
+            "x red, y green, z blue · drag to turn the view",
+            egui::FontId::proportional(12.0),
+            ui.visuals().weak_text_color(),
+        );
+        ui.label("The link's transform, frame i seen from frame i−1:");
+        matrix(ui, &frame_i.to_homogeneous());
+        self.exercise(ui);
+    }
+
+    fn state(&self) -> Option<String> {
+        (self.row != self.initial)
+            .then(|| state_link::encode(&self.row))
+            .flatten()
+    }
+
+    fn restore(&mut self, state: &str) {
+        if let Some(row) = state_link::decode::<[f64; 4]>(state)
+            && row.iter().all(|v| v.is_finite())
+        {
+            self.row = [
+                row[0].clamp(-1.0, 1.0),
+                row[1].clamp(-180.0, 180.0),
+                row[2].clamp(-1.0, 1.0),
+                row[3].clamp(-180.0, 180.0),
+            ];
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::registry::{create, test_spec};
+
+    #[test]
+    fn rows_round_trip_through_links() {
+        let spec = test_spec(
+            "dh-link",
+            &[("row", "0.5, 90, 0.2, 30"), ("convention", "modified")],
+        );
+        let Ok(mut w) = create(&spec) else {
+            panic!("the row is valid")
+        };
+        assert_eq!(w.state(), None, "as the lesson set it up");
+        let state = crate::link::encode(&[0.1, -90.0, 0.0, 45.0]).unwrap_or_default();
+        w.restore(&state);
+        assert_eq!(w.state(), Some(state));
+        // Out-of-range values from a damaged link are clamped, never kept.
+        w.restore(&crate::link::encode(&[9.0, 0.0, 0.0, 0.0]).unwrap_or_default());
+        assert_eq!(w.state(), crate::link::encode(&[1.0, 0.0, 0.0, 0.0]));
+        assert!(create(&test_spec("dh-link", &[("row", "1, 2, 3")])).is_err());
+        assert!(create(&test_spec("dh-link", &[("convention", "craig")])).is_err());
+    }
+}

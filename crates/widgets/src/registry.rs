@@ -1,0 +1,88 @@
+//! The registry: which constructor builds each widget a lesson can name.
+//!
+//! Names, parameters and their checks live in the widget schema
+//! (`kinolab-schema`), shared with the lesson checker, the command line and
+//! the JS API; this list only pairs each schema entry with the code that
+//! draws it.
+
+use kinolab_lessons::WidgetSpec;
+
+use crate::widget::{Constructor, LabWidget};
+use crate::{autonomy, control, locomotion, mechanism, wheels};
+
+/// Every widget's constructor, by its schema name.
+pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
+    ("leg-events", locomotion::leg_events::create),
+    ("support-polygon", locomotion::support_polygon::create),
+    ("scripted-vs-sensing", autonomy::scripted_vs_sensing::create),
+    ("wheel-workbench", wheels::workbench::create),
+    ("wheel-drive", wheels::drive::create),
+    ("frame-rotation", wheels::frame_rotation::create),
+    ("speed-profile", control::speed_profile::create),
+    ("controller-playground", control::playground::create),
+    ("mechanism-viewer", mechanism::viewer::create),
+    ("dh-link", mechanism::dh_link::create),
+];
+
+/// Make the widget a lesson block names, or say why not (the same message
+/// the lesson checker gives, with the block's line).
+pub fn create(spec: &WidgetSpec) -> Result<Box<dyn LabWidget>, String> {
+    let params = kinolab_schema::validate(spec).map_err(|e| format!("line {}: {e}", spec.line))?;
+    let (_, constructor) = CONSTRUCTORS
+        .iter()
+        .find(|(name, _)| *name == spec.name)
+        .ok_or_else(|| format!("widget `{}` has a schema but no constructor", spec.name))?;
+    constructor(&params)
+}
+
+/// A widget block as a lesson would write it, for tests.
+#[cfg(test)]
+pub(crate) fn test_spec(name: &str, params: &[(&str, &str)]) -> WidgetSpec {
+    WidgetSpec {
+        name: name.into(),
+        params: params
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect(),
+        line: 1,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn schema_and_registry_list_the_same_widgets() {
+        let schema: Vec<&str> = kinolab_schema::WIDGETS.iter().map(|w| w.name).collect();
+        let built: Vec<&str> = CONSTRUCTORS.iter().map(|(n, _)| *n).collect();
+        assert_eq!(schema, built);
+    }
+
+    #[test]
+    fn every_widget_builds_with_its_defaults() {
+        for (name, _) in CONSTRUCTORS {
+            if let Err(e) = create(&test_spec(name, &[])) {
+                panic!("{name}: {e}");
+            }
+        }
+    }
+
+    #[test]
+    fn bad_blocks_say_what_and_where() {
+        let Err(message) = create(&test_spec("flux-capacitor", &[])) else {
+            panic!("an unknown widget was built")
+        };
+        assert!(
+            message.starts_with("line 1: there is no widget named `flux-capacitor`"),
+            "{message}"
+        );
+        let Err(message) = create(&test_spec("leg-events", &[("legs", "many")])) else {
+            panic!("a bad parameter was accepted")
+        };
+        assert_eq!(
+            message,
+            "line 1: parameter `legs` must be a whole number from 1 to 12, found `many`"
+        );
+    }
+}

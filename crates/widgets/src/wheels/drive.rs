@@ -1,0 +1,442 @@
+//! Drive a robot on the floor: set wheel spins (forward kinematics) or a
+//! chassis twist (inverse kinematics) and watch the trail, the ICR and each
+//! wheel's velocity.
+
+use std::collections::VecDeque;
+
+use egui::{Key, Painter, RichText, Sense, Stroke, vec2};
+use kinolab_common::display::{fixed, signed};
+use kinolab_wheels::{Chassis, Icr, Vector3, WheelKind, integrate, twist_icr};
+use serde::{Deserialize, Serialize};
+
+use super::chassis::{RobotView, contact_point, draw_frame, draw_icr, draw_wheel, wheel_color};
+use crate::draw::{PlaneView, grid, placed, placed_dir};
+use crate::widget::{LabWidget, Params};
+use crate::{link, theme};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+enum Mode {
+    /// Spins in, twist out.
+    Wheels,
+    /// Twist in, spins (and steering) out.
+    Twist,
+}
+
+/// What the learner sets, and what a link carries.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Command {
+    mode: Mode,
+    /// Commanded twist (twist mode).
+    twist: [f64; 3],
+    /// Commanded spins, rad/s (wheels mode); `None` for passive wheels.
+    spins: Vec<Option<f64>>,
+}
+
+struct Drive {
+    start: Chassis,
+    /// The robot as it is steered now.
+    chassis: Chassis,
+    command: Command,
+    initial: Command,
+    pose: [f64; 3],
+    trail: VecDeque<[f64; 2]>,
+    running: bool,
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let chassis = kinolab_schema::robot_of(p)?;
+    let mode = match p.choice("mode") {
+        Some("wheels") => Mode::Wheels,
+        _ => Mode::Twist,
+    };
+    Ok(Box::new(Drive::new(chassis, mode)))
+}
+
+/// Passive wheels (castors, balls) have no spin a learner can command.
+fn driven(kind: WheelKind) -> bool {
+    !matches!(kind, WheelKind::Castor { .. } | WheelKind::Spherical)
+}
+
+const TRAIL: usize = 1500;
+
+impl Drive {
+    fn new(chassis: Chassis, mode: Mode) -> Self {
+        let mut drive = Self {
+            start: chassis.clone(),
+            chassis,
+            command: Command {
+                mode,
+                twist: [0.3, 0.0, 0.4],
+                spins: Vec::new(),
+            },
+            initial: Command {
+                mode,
+                twist: [0.0; 3],
+                spins: Vec::new(),
+            },
+            pose: [0.0, 0.0, 0.0],
+            trail: VecDeque::new(),
+            running: true,
+        };
+        drive.spins_from_twist();
+        drive.initial = drive.command.clone();
+        drive
+    }
+    /// Start the wheels mode from the spins that produce the current twist
+    /// (or the nearest feasible one).
+    fn spins_from_twist(&mut self) {
+        let twist = self.feasible_twist(Vector3::from(self.command.twist));
+        self.command.spins = match self.chassis.inverse(twist) {
+            Ok(ik) => self
+                .chassis
+                .wheels()
+                .iter()
+                .zip(&ik.wheels)
+                .map(|(w, c)| driven(w.kind).then_some(round2(c.spin)))
+                .collect(),
+            Err(_) => vec![None; self.chassis.wheels().len()],
+        };
+    }
+
+    /// The requested twist projected onto what the wheels allow now (or, in
+    /// twist mode, after steering): the robot never slides.
+    fn feasible_twist(&self, want: Vector3<f64>) -> Vector3<f64> {
+        let reach = self.chassis.analyze().reachable;
+        let mut allowed = Vector3::zeros();
+        for b in reach.basis() {
+            allowed += b * b.dot(&want);
+        }
+        allowed
+    }
+
+    /// The twist to drive with this frame, and a note when the request
+    /// could not be met as asked.
+    fn current_twist(&mut self) -> (Vector3<f64>, Option<String>) {
+        match self.command.mode {
+            Mode::Twist => {
+                let want = Vector3::from(self.command.twist);
+                match self.chassis.inverse(want) {
+                    Ok(ik) if ik.feasible => {
+                        // Steer the wheels as inverse kinematics says.
+                        for (i, c) in ik.wheels.iter().enumerate() {
+                            let w = &self.chassis.wheels()[i];
+                            if w.kind == WheelKind::Steered && (c.steer - w.beta).abs() > 1e-12 {
+                                let mut wheels = self.chassis.wheels().to_vec();
+                                wheels[i].beta = c.steer;
+                                if let Ok(next) =
+                                    Chassis::new(self.chassis.name().to_owned(), wheels)
+                                {
+                                    self.chassis = next;
+                                }
+                            }
+                        }
+                        (want, None)
+                    }
+                    Ok(ik) => {
+                        let names: Vec<String> = ik
+                            .violations
+                            .iter()
+                            .map(|v| match &v.group {
+                                Some(g) => format!("the {g} linkage ({})", signed(v.residual, 2)),
+                                None => format!(
+                                    "wheel {} would slide at {} m/s",
+                                    v.wheel + 1,
+                                    signed(v.residual, 2)
+                                ),
+                            })
+                            .collect();
+                        (
+                            Vector3::zeros(),
+                            Some(format!(
+                                "Not possible: {}. The robot waits; change the request.",
+                                names.join(", ")
+                            )),
+                        )
+                    }
+                    Err(e) => (Vector3::zeros(), Some(e.to_string())),
+                }
+            }
+            Mode::Wheels => match self.chassis.forward(&self.command.spins) {
+                Ok(fk) => {
+                    let note = if !fk.consistent {
+                        Some(format!(
+                            "The spins disagree (residual {} m/s): real wheels would slip. The robot follows the best fit.",
+                            fixed(fk.residual, 3)
+                        ))
+                    } else if !fk.determined {
+                        Some("These spins do not pin the motion down; the robot takes the smallest motion that fits.".into())
+                    } else {
+                        None
+                    };
+                    (Vector3::from(fk.twist), note)
+                }
+                Err(e) => (Vector3::zeros(), Some(e.to_string())),
+            },
+        }
+    }
+
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            let before = self.command.mode;
+            ui.selectable_value(
+                &mut self.command.mode,
+                Mode::Twist,
+                "Set the twist (inverse)",
+            );
+            ui.selectable_value(
+                &mut self.command.mode,
+                Mode::Wheels,
+                "Set wheel spins (forward)",
+            );
+            if before != self.command.mode && self.command.mode == Mode::Wheels {
+                self.spins_from_twist();
+            }
+            ui.separator();
+            if ui
+                .button(if self.running { "Pause" } else { "Run" })
+                .clicked()
+            {
+                self.running = !self.running;
+            }
+            if ui.button("Reset").clicked() {
+                self.chassis = self.start.clone();
+                self.pose = [0.0, 0.0, 0.0];
+                self.trail.clear();
+            }
+            if ui.button("Stop").clicked() {
+                self.command.twist = [0.0; 3];
+                for s in self.command.spins.iter_mut().flatten() {
+                    *s = 0.0;
+                }
+            }
+        });
+        match self.command.mode {
+            Mode::Twist => {
+                ui.vertical(|ui| {
+                    for (k, (label, range)) in [
+                        ("forward (m/s)", 1.0),
+                        ("sideways (m/s)", 1.0),
+                        ("turn (rad/s)", 2.0),
+                    ]
+                    .into_iter()
+                    .enumerate()
+                    {
+                        ui.add(
+                            egui::Slider::new(&mut self.command.twist[k], -range..=range)
+                                .text(label)
+                                .fixed_decimals(2),
+                        );
+                    }
+                });
+            }
+            Mode::Wheels => {
+                ui.vertical(|ui| {
+                    for (i, s) in self.command.spins.iter_mut().enumerate() {
+                        if let Some(s) = s {
+                            ui.add(
+                                egui::Slider::new(s, -20.0..=20.0)
+                                    .text(format!("wheel {} (rad/s)", i + 1))
+                                    .fixed_decimals(1),
+                            );
+                        }
+                    }
+                });
+            }
+        }
+    }
+}
+
+fn round2(v: f64) -> f64 {
+    (v * 100.0).round() / 100.0
+}
+
+impl Drive {
+    /// Arrow keys drive while the floor has the pointer or the focus; Q
+    /// and E slide sideways.
+    fn keyboard(&mut self, ui: &egui::Ui, floor: &egui::Response) {
+        if !(floor.hovered() || floor.has_focus()) || self.command.mode != Mode::Twist {
+            return;
+        }
+        let t = &mut self.command.twist;
+        ui.input(|i| {
+            let step = 0.02;
+            for (key, k, by, limit) in [
+                (Key::ArrowUp, 0, step, 1.0),
+                (Key::ArrowDown, 0, -step, 1.0),
+                (Key::ArrowLeft, 2, 2.0 * step, 2.0),
+                (Key::ArrowRight, 2, -2.0 * step, 2.0),
+                (Key::Q, 1, step, 1.0),
+                (Key::E, 1, -step, 1.0),
+            ] {
+                if i.key_down(key) {
+                    t[k] = (t[k] + by).clamp(-limit, limit);
+                }
+            }
+        });
+    }
+
+    /// Move the robot by one frame's time and extend the trail.
+    fn step(&mut self, ui: &egui::Ui, twist: Vector3<f64>) {
+        if !self.running {
+            return;
+        }
+        let dt = f64::from(ui.input(|i| i.stable_dt)).clamp(0.0, 0.05);
+        self.pose = integrate(self.pose, twist, dt);
+        let here = [self.pose[0], self.pose[1]];
+        let last = self.trail.back().copied();
+        if last.is_none_or(|l| (l[0] - here[0]).hypot(l[1] - here[1]) > 0.01) {
+            self.trail.push_back(here);
+            if self.trail.len() > TRAIL {
+                self.trail.pop_front();
+            }
+        }
+        if twist.norm() > 0.0 {
+            ui.ctx().request_repaint();
+        }
+    }
+
+    /// The floor that follows the robot: grid, trail, robot, each wheel's
+    /// contact-point velocity, the ICR.
+    fn floor(&self, ui: &egui::Ui, painter: &Painter, rect: egui::Rect, twist: Vector3<f64>) {
+        let extent = self
+            .chassis
+            .wheels()
+            .iter()
+            .map(|w| w.l + w.radius)
+            .fold(0.3, f64::max)
+            * 3.2;
+        let view = RobotView {
+            plane: PlaneView::centred(rect, [self.pose[0], self.pose[1]], extent),
+            pose: self.pose,
+        };
+        let ink = ui.visuals().text_color();
+        grid(painter, &view.plane, rect, 0.25, ink.gamma_multiply(0.08));
+        let trail: Vec<egui::Pos2> = self
+            .trail
+            .iter()
+            .map(|p| view.plane.to_screen(*p))
+            .collect();
+        if trail.len() > 1 {
+            painter.add(egui::Shape::line(
+                trail,
+                Stroke::new(2.0, theme::accent(ui).gamma_multiply(0.6)),
+            ));
+        }
+        draw_frame(painter, &view, ink.gamma_multiply(0.5), extent * 0.2);
+        for (i, w) in self.chassis.wheels().iter().enumerate() {
+            draw_wheel(painter, &view, w, wheel_color(i), false);
+            // Velocity of the contact point, drawn in the world, half scale.
+            let c = contact_point(w);
+            let u = [twist.x - twist.z * c[1], twist.y + twist.z * c[0]];
+            let d = placed_dir(self.pose[2], [u[0] * 0.5, u[1] * 0.5]);
+            let from_world = placed(self.pose, c);
+            let from = view.plane.to_screen(from_world);
+            let to = view
+                .plane
+                .to_screen([from_world[0] + d[0], from_world[1] + d[1]]);
+            if (to - from).length() > 2.0 {
+                painter.arrow(from, to - from, Stroke::new(2.0, wheel_color(i)));
+            }
+        }
+        draw_icr(painter, &view, &twist_icr(&twist), theme::accent(ui), rect);
+    }
+
+    /// The twist, ICR and pose in words, and what each wheel does.
+    fn readouts(&self, ui: &mut egui::Ui, twist: Vector3<f64>) {
+        let icr_text = match twist_icr(&twist) {
+            Icr::Point { x, y } => format!(
+                "ICR at ({}, {}) m in the robot frame",
+                fixed(x, 2),
+                fixed(y, 2)
+            ),
+            Icr::Infinity { .. } => "ICR at infinity: driving straight".to_owned(),
+            _ => "standing still".to_owned(),
+        };
+        ui.label(format!(
+            "Twist (forward, sideways, turn) = ({} m/s, {} m/s, {} rad/s). {icr_text}. Pose x = {} m, y = {} m, θ = {}°.",
+            fixed(twist.x, 2), fixed(twist.y, 2), fixed(twist.z, 2),
+            fixed(self.pose[0], 2), fixed(self.pose[1], 2),
+            fixed(kinolab_common::angle::wrap(self.pose[2]).to_degrees(), 0)
+        ));
+        if self.command.mode == Mode::Twist
+            && let Ok(ik) = self.chassis.inverse(twist)
+        {
+            let spins: Vec<String> = ik
+                .wheels
+                .iter()
+                .enumerate()
+                .map(|(i, c)| match self.chassis.wheels()[i].kind {
+                    WheelKind::Steered => format!(
+                        "{}: {} rad/s at β {}°",
+                        i + 1,
+                        fixed(c.spin, 1),
+                        fixed(c.steer.to_degrees(), 0)
+                    ),
+                    WheelKind::Castor { .. } => format!(
+                        "{}: {} rad/s, swings {}°/s",
+                        i + 1,
+                        fixed(c.spin, 1),
+                        fixed(c.steer_rate.to_degrees(), 0)
+                    ),
+                    _ => format!("{}: {} rad/s", i + 1, fixed(c.spin, 1)),
+                })
+                .collect();
+            ui.label(RichText::new(format!("Wheel spins. {}", spins.join("; "))).small());
+        }
+    }
+}
+
+impl LabWidget for Drive {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        self.controls(ui);
+        let width = ui.available_width().min(900.0);
+        let (response, painter) = ui.allocate_painter(vec2(width, 360.0), Sense::click());
+        let rect = response.rect;
+        if response.clicked() {
+            response.request_focus();
+        }
+        let painter = painter.with_clip_rect(rect);
+        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        self.keyboard(ui, &response);
+        let (twist, note) = self.current_twist();
+        self.step(ui, twist);
+        self.floor(ui, &painter, rect, twist);
+        self.readouts(ui, twist);
+        // One line kept for notes, so the layout does not jump.
+        ui.label(RichText::new(note.unwrap_or_default()).color(theme::warn_color(ui)));
+        ui.label(
+            RichText::new(
+                "Click the floor (or hover it) and use the arrow keys to drive; Q and E slide sideways.",
+            )
+            .small(),
+        );
+    }
+
+    fn state(&self) -> Option<String> {
+        (self.command != self.initial)
+            .then(|| link::encode(&self.command))
+            .flatten()
+    }
+
+    fn restore(&mut self, state: &str) {
+        if let Some(c) = link::decode::<Command>(state)
+            && c.spins.len() == self.chassis.wheels().len()
+            && c.twist.iter().all(|v| v.is_finite())
+            && c.spins.iter().flatten().all(|v| v.is_finite())
+        {
+            self.command = Command {
+                twist: [
+                    c.twist[0].clamp(-1.0, 1.0),
+                    c.twist[1].clamp(-1.0, 1.0),
+                    c.twist[2].clamp(-2.0, 2.0),
+                ],
+                spins: c
+                    .spins
+                    .iter()
+                    .map(|s| s.map(|v| v.clamp(-20.0, 20.0)))
+                    .collect(),
+                mode: c.mode,
+            };
+        }
+    }
+}

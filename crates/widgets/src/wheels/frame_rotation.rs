@@ -1,0 +1,208 @@
+//! Inertial and robot frames: turn the robot by θ, set a motion in the
+//! inertial frame, and see R(θ) turn it into robot-frame motion.
+
+use egui::{Painter, Pos2, Rect, RichText, Sense, Stroke, Vec2, vec2};
+use kinolab_common::display::{fixed, signed};
+use kinolab_wheels::{Vector3, rotation};
+use serde::{Deserialize, Serialize};
+
+use crate::draw::axes;
+use crate::widget::{LabWidget, Params};
+use crate::{link, theme};
+
+/// The heading and the inertial motion (ẋ_I, ẏ_I, θ̇): what the learner
+/// sets, and what a link carries.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+struct Setup {
+    theta_deg: f64,
+    inertial: [f64; 3],
+}
+
+struct FrameRotation {
+    setup: Setup,
+    initial: Setup,
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let setup = Setup {
+        theta_deg: p.number("theta-deg").unwrap_or(30.0),
+        inertial: [1.0, 0.0, 0.0],
+    };
+    Ok(Box::new(FrameRotation {
+        setup,
+        initial: setup,
+    }))
+}
+
+/// A signed speed in words: "forward 0.50 m/s", "backward 0.20 m/s", "0.00 m/s".
+fn along(value: f64, positive: &str, negative: &str, unit: &str) -> String {
+    let text = fixed(value.abs(), 2);
+    if fixed(value, 2) == "0.00" {
+        format!("{text} {unit} {positive} or {negative}")
+    } else if value > 0.0 {
+        format!("{positive} {text} {unit}")
+    } else {
+        format!("{negative} {text} {unit}")
+    }
+}
+
+impl FrameRotation {
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.setup;
+        ui.add(
+            egui::Slider::new(&mut s.theta_deg, -180.0..=180.0)
+                .text("heading θ (°)")
+                .fixed_decimals(0),
+        );
+        ui.add(
+            egui::Slider::new(&mut s.inertial[0], -1.0..=1.0)
+                .text("speed along the world's x axis (m/s)")
+                .fixed_decimals(2),
+        );
+        ui.add(
+            egui::Slider::new(&mut s.inertial[1], -1.0..=1.0)
+                .text("speed along the world's y axis (m/s)")
+                .fixed_decimals(2),
+        );
+        ui.add(
+            egui::Slider::new(&mut s.inertial[2], -1.0..=1.0)
+                .text("turn rate (rad/s)")
+                .fixed_decimals(2),
+        );
+    }
+
+    /// The world's axes at the left, the robot turned by θ in the middle,
+    /// and the motion as an arrow.
+    fn drawing(&self, ui: &egui::Ui, painter: &Painter, rect: Rect) {
+        let ink = ui.visuals().text_color();
+        let accent = theme::accent(ui);
+        let scale = rect.height() * 0.36;
+        let origin = rect.left_bottom() + vec2(40.0, -30.0);
+        axes(
+            painter,
+            origin,
+            [
+                (origin + vec2(scale * 0.6, 0.0), "x"),
+                (origin + vec2(0.0, -scale * 0.6), "y"),
+            ],
+            ink.gamma_multiply(0.6),
+        );
+        painter.text(
+            origin + vec2(4.0, 6.0),
+            egui::Align2::LEFT_TOP,
+            "world",
+            egui::FontId::proportional(11.0),
+            ink,
+        );
+        let p = rect.center() + vec2(-40.0, 10.0);
+        let (s, c) = self.setup.theta_deg.to_radians().sin_cos();
+        let x_r = vec2(c as f32, -s as f32) * scale * 0.7;
+        let y_r = vec2(-s as f32, -c as f32) * scale * 0.7;
+        robot_body(painter, p, x_r, y_r, accent);
+        axes(painter, p, [(p + x_r, "x_R"), (p + y_r, "y_R")], accent);
+        let v = vec2(
+            self.setup.inertial[0] as f32,
+            -self.setup.inertial[1] as f32,
+        ) * scale
+            * 0.8;
+        if v.length() > 1.0 {
+            painter.arrow(p, v, Stroke::new(3.0, theme::good_color(ui)));
+        }
+        painter.text(
+            rect.right_top() + vec2(-10.0, 10.0),
+            egui::Align2::RIGHT_TOP,
+            format!("θ = {}°", fixed(self.setup.theta_deg, 0)),
+            egui::FontId::proportional(13.0),
+            ink,
+        );
+    }
+
+    /// robot = R(θ) × inertial, number by number.
+    fn equation(&self, ui: &mut egui::Ui, r: &kinolab_wheels::Matrix3<f64>, robot: &Vector3<f64>) {
+        let mono = |s: String| RichText::new(s).monospace();
+        ui.label("robot-frame motion = R(θ) × world motion:");
+        egui::Grid::new(ui.scope_id().with("r"))
+            .num_columns(7)
+            .spacing(vec2(8.0, 2.0))
+            .show(ui, |ui| {
+                for row in 0..3 {
+                    ui.label(mono(signed(robot[row], 3)).color(theme::good_color(ui)));
+                    ui.label(if row == 1 { "=" } else { " " });
+                    for col in 0..3 {
+                        ui.label(mono(signed(r[(row, col)], 3)));
+                    }
+                    ui.label(if row == 1 { "×" } else { " " });
+                    ui.label(mono(signed(self.setup.inertial[row], 3)));
+                    ui.end_row();
+                }
+            });
+    }
+}
+
+/// A body outline along the robot's x axis.
+fn robot_body(painter: &Painter, p: Pos2, x_r: Vec2, y_r: Vec2, color: egui::Color32) {
+    let body: Vec<Pos2> = [(0.45, 0.3), (0.45, -0.3), (-0.35, -0.3), (-0.35, 0.3)]
+        .iter()
+        .map(|(a, b)| p + x_r * *a + y_r * *b)
+        .collect();
+    painter.add(egui::Shape::convex_polygon(
+        body,
+        color.gamma_multiply(0.12),
+        Stroke::new(1.0, color),
+    ));
+}
+
+impl LabWidget for FrameRotation {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.vertical(|ui| self.controls(ui));
+        let r = rotation(self.setup.theta_deg.to_radians());
+        let robot = r * Vector3::from(self.setup.inertial);
+        let size = vec2(ui.available_width().min(720.0), 260.0);
+        let (response, painter) = ui.allocate_painter(size, Sense::hover());
+        painter.rect_filled(response.rect, 6.0, ui.visuals().extreme_bg_color);
+        self.drawing(ui, &painter, response.rect);
+        self.equation(ui, &r, &robot);
+        ui.label(RichText::new(format!(
+            "As the robot sees it: {}, {}, turning {} rad/s. The inverse of R(θ) is its transpose: applying it brings the motion back.",
+            along(robot.x, "forward", "backward", "m/s"),
+            along(robot.y, "to its left", "to its right", "m/s"),
+            fixed(robot.z, 2),
+        )).small());
+    }
+
+    fn state(&self) -> Option<String> {
+        (self.setup != self.initial)
+            .then(|| link::encode(&self.setup))
+            .flatten()
+    }
+
+    fn restore(&mut self, state: &str) {
+        if let Some(s) = link::decode::<Setup>(state)
+            && s.theta_deg.is_finite()
+            && s.inertial.iter().all(|v| v.is_finite())
+        {
+            self.setup = Setup {
+                theta_deg: s.theta_deg.clamp(-180.0, 180.0),
+                inertial: s.inertial.map(|v| v.clamp(-1.0, 1.0)),
+            };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn motions_read_as_directions_not_signs() {
+        assert_eq!(
+            along(-1.0, "to its left", "to its right", "m/s"),
+            "to its right 1.00 m/s"
+        );
+        assert_eq!(along(0.5, "forward", "backward", "m/s"), "forward 0.50 m/s");
+        assert_eq!(
+            along(-1e-9, "forward", "backward", "m/s"),
+            "0.00 m/s forward or backward"
+        );
+    }
+}
