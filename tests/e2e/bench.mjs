@@ -4,7 +4,8 @@
 import { readFile, readdir, stat, writeFile, mkdir } from "node:fs/promises";
 import { gzipSync } from "node:zlib";
 import { join } from "node:path";
-import { serve, launch, waitForLab } from "./serve.mjs";
+import { serve, launch, waitForLab, waitForPage } from "./serve.mjs";
+import { sizeByCrate } from "./wasm-size.mjs";
 
 const [criterionDir, benchWeb, dist] = process.argv.slice(2);
 const median = (xs) => { const s = [...xs].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
@@ -74,6 +75,43 @@ for (let i = 0; i < 5; i++) {
   firstFrames.push(Number(await lab.evaluate(() => document.documentElement.dataset.kinolabFirstFrameMs)));
   await context.close();
 }
+// Frame time of every widget, alone in the gallery at 1280×800, while the
+// pointer drags across it (and while it animates on its own).
+const widgetNames = await (async () => {
+  const probe = await browser.newPage();
+  await probe.goto(`${labServer.url}#dev`);
+  await waitForLab(probe);
+  const list = await probe.evaluate(async () => {
+    const m = await import("./pkg/kinolab_js.js");
+    await m.default();
+    return m.widgets().map((w) => w.name);
+  });
+  await probe.close();
+  return list;
+})();
+const frames = [];
+for (const name of widgetNames) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const lab = await context.newPage();
+  await lab.goto(`${labServer.url}#/gallery/${name}`);
+  await waitForPage(lab, `gallery/${name}`);
+  await lab.waitForTimeout(500);
+  await lab.evaluate(() => window.wasmBindings.kinolab_frame_times());
+  for (const y of [300, 420, 540]) {
+    await lab.mouse.move(420, y);
+    await lab.mouse.down();
+    for (let i = 1; i <= 40; i++) {
+      await lab.mouse.move(420 + 10 * i, y + (i % 10) * 3);
+      await lab.waitForTimeout(16);
+    }
+    await lab.mouse.up();
+  }
+  await lab.waitForTimeout(500);
+  const ms = await lab.evaluate(() => Array.from(window.wasmBindings.kinolab_frame_times()));
+  const sorted = [...ms].sort((a, b) => a - b);
+  frames.push({ name, count: ms.length, median: median(ms), p95: sorted[Math.floor(0.95 * (sorted.length - 1))] });
+  await context.close();
+}
 await labServer.close();
 await browser.close();
 
@@ -99,6 +137,28 @@ try {
 } catch { /* no survey */ }
 lines.push("");
 lines.push(`lab wasm: ${(wasmBytes.length / 1e6).toFixed(2)} MB raw, ${(gzipSync(wasmBytes, { level: 9 }).length / 1e6).toFixed(2)} MB gzipped`);
+lines.push("");
+lines.push("| widget (gallery, 1280×800, dragged) | frames | median CPU / frame | p95 | median within 4 ms | p95 within 4 ms |");
+lines.push("|---|---:|---:|---:|---|---|");
+for (const f of frames) {
+  lines.push(`| ${f.name} | ${f.count} | ${f.median.toFixed(2)} ms | ${f.p95.toFixed(2)} ms | ${f.median <= 4 ? "yes" : "no"} | ${f.p95 <= 4 ? "yes" : "no"} |`);
+}
+// Where the bytes go (shares from the build before wasm-opt, which keeps names).
+try {
+  const size = await sizeByCrate("target/wasm32-unknown-unknown/release/kinolab-lab.wasm");
+  const total = size.code + size.data;
+  const share = (b) => `${(100 * b / total).toFixed(1)} %`;
+  lines.push("");
+  lines.push("| part of the lab's wasm (before wasm-opt) | KB | share |");
+  lines.push("|---|---:|---:|");
+  lines.push(`| data (fonts, lessons, tables) | ${(size.data / 1024).toFixed(0)} | ${share(size.data)} |`);
+  for (const [crate, bytes] of size.byCrate.slice(0, 20)) {
+    lines.push(`| ${crate} | ${(bytes / 1024).toFixed(0)} | ${share(bytes)} |`);
+  }
+  const rest = size.byCrate.slice(20).reduce((a, [, b]) => a + b, 0);
+  lines.push(`| everything else | ${(rest / 1024).toFixed(0)} | ${share(rest)} |`);
+} catch (e) { lines.push(`(no size breakdown: ${e.message})`); }
+lines.push("");
 lines.push(`first frame after navigation: median ${median(firstFrames).toFixed(0)} ms of 5 cold loads (${firstFrames.map((x) => x.toFixed(0)).join(", ")} ms)`);
 const report = lines.join("\n");
 console.log(report);

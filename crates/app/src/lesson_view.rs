@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 
 use egui::{RichText, Stroke};
-use kinolab_lessons::{Align, Block, Inline, Span, WidgetSpec, math::Math};
+use kinolab_lessons::{Align, Block, Inline, Quiz, Span, WidgetSpec, math::Math};
 
 use kinolab_formula::layout::{MathStyle, display_math, math_widget};
 use kinolab_widgets::theme;
@@ -75,61 +75,9 @@ fn block_ui(
             display_math(ui, math, &math_style(ui, theme::BODY_SIZE));
             ui.add_space(8.0);
         }
-        Block::List { start, items } => {
-            for (i, item) in items.iter().enumerate() {
-                ui.horizontal_top(|ui| {
-                    let marker = match start {
-                        Some(n) => format!("{}.", n + i as u64),
-                        None => "•".to_owned(),
-                    };
-                    ui.add_sized(
-                        [22.0, theme::BODY_SIZE + 4.0],
-                        egui::Label::new(RichText::new(marker).size(theme::BODY_SIZE)),
-                    );
-                    ui.vertical(|ui| {
-                        for block in item {
-                            block_ui(ui, block, state, quiz_no, widget_no);
-                        }
-                    });
-                });
-            }
-            ui.add_space(6.0);
-        }
-        Block::Quote(blocks) => {
-            egui::Frame::new()
-                .inner_margin(egui::Margin {
-                    left: 12,
-                    right: 8,
-                    top: 4,
-                    bottom: 4,
-                })
-                .stroke(Stroke::NONE)
-                .show(ui, |ui| {
-                    let top = ui.cursor().top();
-                    for block in blocks {
-                        block_ui(ui, block, state, quiz_no, widget_no);
-                    }
-                    let x = ui.min_rect().left() - 8.0;
-                    let y = egui::Rangef::new(top, ui.min_rect().bottom());
-                    ui.painter()
-                        .vline(x, y, Stroke::new(3.0, theme::accent(ui)));
-                });
-        }
-        Block::Code { text, .. } => {
-            egui::Frame::new()
-                .fill(ui.visuals().code_bg_color)
-                .corner_radius(4.0)
-                .inner_margin(8.0)
-                .show(ui, |ui| {
-                    ui.set_width(ui.available_width());
-                    ui.label(
-                        RichText::new(text.trim_end())
-                            .monospace()
-                            .size(theme::CODE_SIZE),
-                    );
-                });
-            ui.add_space(8.0);
-        }
+        Block::List { start, items } => list_ui(ui, *start, items, state, quiz_no, widget_no),
+        Block::Quote(blocks) => quote_ui(ui, blocks, state, quiz_no, widget_no),
+        Block::Code { text, .. } => code_ui(ui, text),
         Block::Table {
             align,
             header,
@@ -147,18 +95,7 @@ fn block_ui(
             widget_ui(ui, &id, spec, state.widgets, state.restore);
             ui.add_space(10.0);
         }
-        Block::Quiz(quiz) => {
-            let id = format!("{}#{}", state.address, *quiz_no);
-            *quiz_no += 1;
-            let quiz_state = state.quizzes.entry(id.clone()).or_default();
-            if quiz_ui(ui, &id, quiz, quiz_state, state.navigate)
-                && let Some(correct) = quiz_state.verdict
-            {
-                state.progress.record_answer(&id, correct);
-                *state.progress_changed = true;
-            }
-            ui.add_space(12.0);
-        }
+        Block::Quiz(quiz) => quiz_block_ui(ui, quiz, state, quiz_no),
     }
     // Images sit inside paragraphs in Markdown; draw them after the text.
     if let Block::Paragraph(spans) = block {
@@ -168,6 +105,87 @@ fn block_ui(
             }
         }
     }
+}
+
+fn list_ui(
+    ui: &mut egui::Ui,
+    start: Option<u64>,
+    items: &[Vec<Block>],
+    state: &mut LessonState<'_>,
+    quiz_no: &mut usize,
+    widget_no: &mut usize,
+) {
+    for (i, item) in items.iter().enumerate() {
+        ui.horizontal_top(|ui| {
+            let marker = match start {
+                Some(n) => format!("{}.", n + i as u64),
+                None => "•".to_owned(),
+            };
+            ui.add_sized(
+                [22.0, theme::BODY_SIZE + 4.0],
+                egui::Label::new(RichText::new(marker).size(theme::BODY_SIZE)),
+            );
+            ui.vertical(|ui| {
+                for block in item {
+                    block_ui(ui, block, state, quiz_no, widget_no);
+                }
+            });
+        });
+    }
+    ui.add_space(6.0);
+}
+
+/// A block quote: indented, with an accent bar down its left side.
+fn quote_ui(
+    ui: &mut egui::Ui,
+    blocks: &[Block],
+    state: &mut LessonState<'_>,
+    quiz_no: &mut usize,
+    widget_no: &mut usize,
+) {
+    let margin = egui::Margin {
+        left: 12,
+        right: 8,
+        top: 4,
+        bottom: 4,
+    };
+    egui::Frame::new().inner_margin(margin).show(ui, |ui| {
+        let top = ui.cursor().top();
+        for block in blocks {
+            block_ui(ui, block, state, quiz_no, widget_no);
+        }
+        let x = ui.min_rect().left() - 8.0;
+        let y = egui::Rangef::new(top, ui.min_rect().bottom());
+        ui.painter()
+            .vline(x, y, Stroke::new(3.0, theme::accent(ui)));
+    });
+}
+
+fn code_ui(ui: &mut egui::Ui, text: &str) {
+    egui::Frame::new()
+        .fill(ui.visuals().code_bg_color)
+        .corner_radius(4.0)
+        .inner_margin(8.0)
+        .show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            let text = RichText::new(text.trim_end()).monospace();
+            ui.label(text.size(theme::CODE_SIZE));
+        });
+    ui.add_space(8.0);
+}
+
+/// A quiz, numbered within the lesson; a fresh verdict is saved to progress.
+fn quiz_block_ui(ui: &mut egui::Ui, quiz: &Quiz, state: &mut LessonState<'_>, quiz_no: &mut usize) {
+    let id = format!("{}#{}", state.address, *quiz_no);
+    *quiz_no += 1;
+    let quiz_state = state.quizzes.entry(id.clone()).or_default();
+    if quiz_ui(ui, &id, quiz, quiz_state, state.navigate)
+        && let Some(correct) = quiz_state.verdict
+    {
+        state.progress.record_answer(&id, correct);
+        *state.progress_changed = true;
+    }
+    ui.add_space(12.0);
 }
 
 fn math_style(ui: &egui::Ui, size: f32) -> MathStyle {

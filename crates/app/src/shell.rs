@@ -101,10 +101,22 @@ impl KinolabApp {
     /// buttons and typed links come through here).
     pub fn follow_hash(&mut self, hash: &str) {
         let page = Page::from_hash(hash);
-        if let Page::Lesson(address) = &page {
+        if let Page::Lesson(address) = &page
+            && self
+                .state_hash
+                .as_deref()
+                .map(|h| h.trim_start_matches('#'))
+                != Some(hash.trim_start_matches('#'))
+        {
+            // A link from outside: each widget it names starts afresh from
+            // the lesson's set-up and takes the link's state (a damaged
+            // state leaves it as set up), and the address is written anew.
             for (n, state) in route::widget_states(hash) {
-                self.restore.insert(format!("{address}@w{n}"), state);
+                let id = format!("{address}@w{n}");
+                self.widgets.remove(&id);
+                self.restore.insert(id, state);
             }
+            self.state_hash = None;
         }
         if page != self.page {
             self.open(page);

@@ -7,7 +7,13 @@ use crate::progress::STORAGE_KEY;
 use crate::route::Page;
 use crate::shell::KinolabApp;
 
+/// How many recent frames' CPU times are kept for the benchmark.
+const FRAME_HISTORY: usize = 2000;
+
 thread_local! {
+    /// CPU milliseconds of recent frames (logic and painting), oldest first.
+    static FRAME_MS: RefCell<std::collections::VecDeque<f32>> =
+        const { RefCell::new(std::collections::VecDeque::new()) };
     /// The hash the app last acted on.
     static LAST_HASH: RefCell<Option<String>> = const { RefCell::new(None) };
     /// What the DOM signals last said, so they are written only on change.
@@ -26,8 +32,24 @@ pub fn current_hash() -> String {
         .unwrap_or_default()
 }
 
-/// Follow the back and forward buttons and edited URLs.
-pub fn before_frame(app: &mut KinolabApp, _frame: &eframe::Frame) {
+/// The CPU time of the frames drawn since the last call, in milliseconds
+/// (`window.wasmBindings.kinolab_frame_times()`, read by `cargo xtask bench`).
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn kinolab_frame_times() -> Vec<f32> {
+    FRAME_MS.with_borrow_mut(|f| f.drain(..).collect())
+}
+
+/// Follow the back and forward buttons and edited URLs; note the last
+/// frame's CPU time.
+pub fn before_frame(app: &mut KinolabApp, frame: &eframe::Frame) {
+    if let Some(seconds) = frame.info().cpu_usage {
+        FRAME_MS.with_borrow_mut(|f| {
+            if f.len() == FRAME_HISTORY {
+                f.pop_front();
+            }
+            f.push_back(seconds * 1000.0);
+        });
+    }
     let hash = current_hash();
     let changed = LAST_HASH.with_borrow(|last| last.as_deref() != Some(hash.as_str()));
     if changed {

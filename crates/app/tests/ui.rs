@@ -231,6 +231,17 @@ fn a_changed_layout_travels_in_the_link() {
     h.run_steps(4);
     h.get_by_label("Wheel 6 (spherical)");
     assert!(h.query_by_label("Wheel 7 (fixed)").is_none());
+    // The same inside one page (a link followed without a reload): the good
+    // link brings the seventh wheel back, the damaged one resets the widget
+    // and the address loses the broken state.
+    h.state_mut().follow_hash(&link);
+    h.run_steps(4);
+    h.get_all_by_label("Wheel 7 (fixed)").next().unwrap();
+    h.state_mut().take_state_hash();
+    h.state_mut().follow_hash(&format!("{lesson}?w0=zzz"));
+    h.run_steps(4);
+    assert!(h.query_by_label("Wheel 7 (fixed)").is_none());
+    assert_eq!(h.state_mut().take_state_hash().as_deref(), Some(lesson));
 }
 
 const GAINS_LESSON: &str = "#/motion-control/choosing-gains";
@@ -283,4 +294,26 @@ fn the_playground_shows_the_run_and_its_stability() {
         h.state_mut().take_state_hash().as_deref(),
         Some(link.as_str())
     );
+}
+
+#[test]
+fn the_gallery_lists_every_widget_from_the_schema_and_shows_each_alone() {
+    let mut h = animated(KinolabApp::new(None, "#/gallery"));
+    h.run_steps(6);
+    for schema in kinolab_schema::WIDGETS {
+        h.get_all_by_label(schema.name)
+            .next()
+            .unwrap_or_else(|| panic!("{} is listed", schema.name));
+    }
+    assert!(h.query_by_label_contains("cannot be shown").is_none());
+    h.get_all_by_label("open alone").nth(3).unwrap().click();
+    h.run_steps(4);
+    assert_eq!(
+        h.state().page(),
+        &Page::Gallery(Some(kinolab_schema::WIDGETS[3].name.to_owned()))
+    );
+    // An unknown name says so.
+    let mut h = animated(KinolabApp::new(None, "#/gallery/flux-capacitor"));
+    h.run_steps(4);
+    h.get_by_label("No such widget");
 }

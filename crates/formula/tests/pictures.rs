@@ -12,6 +12,8 @@ fn picture(name: &str, formula: &str) {
     let mut harness = kinolab_picture::harness()
         .with_size(egui::vec2(360.0, 120.0))
         .build_ui(move |ui| {
+            ui.ctx()
+                .set_fonts(kinolab_formula::layout::fonts::definitions());
             ui.ctx().set_visuals(egui::Visuals::light());
             egui::Frame::new().fill(Color32::WHITE).show(ui, |ui| {
                 ui.set_min_size(ui.available_size());

@@ -53,6 +53,11 @@ pub fn lessons() -> Reply {
     reply(&list)
 }
 
+/// Every widget a lesson can embed: name, summary and parameters.
+pub fn widgets() -> Reply {
+    reply(&kinolab_schema::WIDGETS)
+}
+
 /// One lesson's Markdown checked, as the lesson checker would.
 pub fn check_lesson(file: &str, markdown: &str) -> Reply {
     let (meta, blocks) =

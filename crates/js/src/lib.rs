@@ -99,6 +99,13 @@ pub fn lessons() -> Result<JsValue, JsError> {
     to_js(api::lessons())
 }
 
+/// Every widget a lesson can embed (and the gallery at `#/gallery/<name>`
+/// shows alone): `[{ name, summary, params: [{ name, kind, default, help }] }]`.
+#[wasm_bindgen]
+pub fn widgets() -> Result<JsValue, JsError> {
+    to_js(api::widgets())
+}
+
 /// Check a lesson's Markdown as the lesson checker does (widgets and their
 /// parameters included): its summary, or an error naming `file` and line.
 #[wasm_bindgen(js_name = checkLesson)]

@@ -63,8 +63,8 @@ fn a_broken_lesson_names_the_line() {
 #[wasm_bindgen_test]
 fn pick_cell_through_the_js_api() {
     let run = kinolab_js::pick_cell(0.02, 0.01, 0.0, 10, 3).unwrap();
-    assert!((get(&run, "scriptedSuccess").as_f64().unwrap() - 0.25).abs() < 1e-12);
-    assert_eq!(get(&run, "sensingGrasped").as_f64(), Some(10.0));
+    assert!((get(&run, "scripted_success").as_f64().unwrap() - 0.25).abs() < 1e-12);
+    assert_eq!(get(&run, "sensing_grasped").as_f64(), Some(10.0));
 }
 
 #[wasm_bindgen_test]

@@ -203,7 +203,46 @@ impl ModelBuilder {
 
     /// Check the tree and order it for traversal.
     pub fn build(self) -> Result<Model, FieldError> {
-        let n = self.bodies.len();
+        self.check_names()?;
+        let parent_joint = self.check_joints()?;
+        self.check_extras()?;
+        let chains = self.chains(&parent_joint)?;
+        let (joints, chains) = self.depth_order(chains);
+        let mut variables = Vec::new();
+        let mut variable_of = vec![None; joints.len()];
+        for (i, j) in joints.iter().enumerate() {
+            if j.kind.moves() {
+                variable_of[i] = Some(variables.len());
+                variables.push(i);
+            }
+        }
+        let plain = joints
+            .iter()
+            .map(|j| [j.origin == Pose::identity(), j.post == Pose::identity()])
+            .collect();
+        let mut model = Model {
+            name: self.name,
+            bodies: self.bodies,
+            joints,
+            frames: self.frames,
+            variables,
+            variable_of,
+            chains,
+            plain,
+            couplings: Vec::new(),
+            loops: Vec::new(),
+            shapes: self.shapes,
+            ignored: self.ignored,
+            groups: self.groups,
+            commands: Default::default(),
+        };
+        model.couplings = crate::compose::resolve_couplings(&model, &self.couplings)?;
+        model.loops = crate::compose::resolve_loops(&model, &self.loops)?;
+        Ok(model)
+    }
+
+    /// Body and frame names share one namespace and must be unique.
+    fn check_names(&self) -> Result<(), FieldError> {
         let mut names = std::collections::HashSet::new();
         for (i, b) in self.bodies.iter().enumerate() {
             if !names.insert(b.name.as_str()) {
@@ -214,7 +253,7 @@ impl ModelBuilder {
             }
         }
         for (i, f) in self.frames.iter().enumerate() {
-            if f.body >= n {
+            if f.body >= self.bodies.len() {
                 return Err(FieldError::new(format!("frames[{i}].body"), "no such body"));
             }
             if !names.insert(f.name.as_str()) {
@@ -224,6 +263,12 @@ impl ModelBuilder {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// Check each joint; returns, for each body, the joint it hangs from.
+    fn check_joints(&self) -> Result<Vec<Option<usize>>, FieldError> {
+        let n = self.bodies.len();
         let mut parent_joint: Vec<Option<usize>> = vec![None; n];
         for (i, j) in self.joints.iter().enumerate() {
             let field = |f: &str| format!("joints[{i}].{f}");
@@ -234,12 +279,10 @@ impl ModelBuilder {
                 ));
             }
             if parent_joint[j.child].replace(i).is_some() {
+                let body = &self.bodies[j.child].name;
                 return Err(FieldError::new(
                     field("child"),
-                    format!(
-                        "body `{}` already hangs from another joint",
-                        self.bodies[j.child].name
-                    ),
+                    format!("body `{body}` already hangs from another joint"),
                 ));
             }
             if let Some([lo, hi]) = j.limits
@@ -250,21 +293,39 @@ impl ModelBuilder {
                     format!("need lower ≤ upper, got [{lo}, {hi}]"),
                 ));
             }
-            let o = j
-                .origin
-                .translation
-                .vector
-                .iter()
-                .chain(j.post.translation.vector.iter());
-            if o.chain(j.axis.iter())
-                .chain([j.offset].iter())
-                .any(|v| !v.is_finite())
-            {
+            let translations = j.origin.translation.vector.iter();
+            let mut numbers = translations
+                .chain(j.post.translation.vector.iter())
+                .chain(j.axis.iter())
+                .chain(std::iter::once(&j.offset));
+            if numbers.any(|v| !v.is_finite()) {
                 return Err(FieldError::new(field("origin"), "must be finite numbers"));
             }
         }
-        // Chains from the world: follow parents up; a cycle never reaches 0.
-        let mut chains = vec![Vec::new(); n];
+        Ok(parent_joint)
+    }
+
+    /// Ignored pairs and shapes must name bodies that exist.
+    fn check_extras(&self) -> Result<(), FieldError> {
+        let n = self.bodies.len();
+        for (i, &(a, b)) in self.ignored.iter().enumerate() {
+            if a >= n || b >= n {
+                return Err(FieldError::new(
+                    format!("ignore[{i}]"),
+                    "names a body that does not exist",
+                ));
+            }
+        }
+        for (i, s) in self.shapes.iter().enumerate() {
+            s.check(&format!("shapes[{i}]"), n)?;
+        }
+        Ok(())
+    }
+
+    /// For each body, the joints from the world down to it. Follows parents
+    /// upwards; a chain longer than the joint count means a loop.
+    fn chains(&self, parent_joint: &[Option<usize>]) -> Result<Vec<Vec<usize>>, FieldError> {
+        let mut chains = vec![Vec::new(); self.bodies.len()];
         for (b, chain) in chains.iter_mut().enumerate().skip(1) {
             let mut at = b;
             while at != 0 {
@@ -285,62 +346,22 @@ impl ModelBuilder {
             }
             chain.reverse();
         }
-        // Order joints by depth so parents come first, then renumber chains.
+        Ok(chains)
+    }
+
+    /// Order joints by depth so parents come first, and renumber the chains.
+    fn depth_order(&self, mut chains: Vec<Vec<usize>>) -> (Vec<Joint>, Vec<Vec<usize>>) {
         let mut order: Vec<usize> = (0..self.joints.len()).collect();
         order.sort_by_key(|&j| chains[self.joints[j].child].len());
         let mut new_index = vec![0; self.joints.len()];
         for (new, &old) in order.iter().enumerate() {
             new_index[old] = new;
         }
-        let joints: Vec<Joint> = order.iter().map(|&j| self.joints[j].clone()).collect();
-        for chain in &mut chains {
-            for j in chain.iter_mut() {
-                *j = new_index[*j];
-            }
+        let joints = order.iter().map(|&j| self.joints[j].clone()).collect();
+        for j in chains.iter_mut().flatten() {
+            *j = new_index[*j];
         }
-        let mut variables = Vec::new();
-        let mut variable_of = vec![None; joints.len()];
-        for (i, j) in joints.iter().enumerate() {
-            if j.kind.moves() {
-                variable_of[i] = Some(variables.len());
-                variables.push(i);
-            }
-        }
-        for (i, &(a, b)) in self.ignored.iter().enumerate() {
-            if a >= n || b >= n {
-                return Err(FieldError::new(
-                    format!("ignore[{i}]"),
-                    "names a body that does not exist",
-                ));
-            }
-        }
-        for (i, s) in self.shapes.iter().enumerate() {
-            s.check(&format!("shapes[{i}]"), n)?;
-        }
-        let mut model = Model {
-            name: self.name,
-            bodies: self.bodies,
-            joints,
-            frames: self.frames,
-            variables,
-            variable_of,
-            chains,
-            plain: Vec::new(),
-            couplings: Vec::new(),
-            loops: Vec::new(),
-            shapes: self.shapes,
-            ignored: self.ignored,
-            groups: self.groups,
-            commands: Default::default(),
-        };
-        model.plain = model
-            .joints
-            .iter()
-            .map(|j| [j.origin == Pose::identity(), j.post == Pose::identity()])
-            .collect();
-        model.couplings = crate::compose::resolve_couplings(&model, &self.couplings)?;
-        model.loops = crate::compose::resolve_loops(&model, &self.loops)?;
-        Ok(model)
+        (joints, chains)
     }
 }
 

@@ -47,14 +47,10 @@ pub fn install(ctx: &egui::Context) {
     apply_text_styles(ctx);
 }
 
-/// egui's proportional font lacks many math and arrow glyphs (∈ ∇ ⋅ → ‖ ⌊);
-/// its monospace font, already bundled, has them, so it serves as fallback.
+/// The lab's two fonts, cut down to what it draws (the formula crate owns
+/// them: formulas are set against their metrics).
 fn install_fonts(ctx: &egui::Context) {
-    let mut fonts = egui::FontDefinitions::default();
-    if let Some(family) = fonts.families.get_mut(&FontFamily::Proportional) {
-        family.push("Hack".to_owned());
-    }
-    ctx.set_fonts(fonts);
+    ctx.set_fonts(kinolab_formula::layout::fonts::definitions());
 }
 
 /// Larger, more readable text than egui's defaults.

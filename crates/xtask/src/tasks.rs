@@ -2,7 +2,7 @@
 
 use std::process::Command;
 
-use crate::setup::{Needs, Result, ensure, path_env, root, run};
+use crate::setup::{Needs, Result, ensure, path_env, run};
 
 fn cargo(args: &[&str]) -> Command {
     let mut cmd = Command::new("cargo");
@@ -231,9 +231,8 @@ pub fn bench(args: &[String]) -> Result {
             "target/wasm32-unknown-unknown/release/kinolab_bench.wasm",
         ],
     ))?;
-    if !root().join("dist/index.html").exists() {
-        dist()?;
-    }
+    // The release build, fresh: its size is part of the report.
+    dist()?;
     run(&mut tool(
         "node",
         &[

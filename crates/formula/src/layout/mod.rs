@@ -14,6 +14,7 @@
 //! [`Ui`].
 
 mod fences;
+pub mod fonts;
 mod typeset;
 mod ui;
 

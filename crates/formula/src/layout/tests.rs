@@ -12,9 +12,19 @@ const STYLE: MathStyle = MathStyle {
     color: Color32::WHITE,
 };
 
-/// Runs `f` inside one egui pass, where fonts are available.
-fn with_fonts<R>(f: impl FnOnce(&mut FontsView<'_>) -> R) -> R {
+/// A context with the lab's fonts installed (they take effect at the
+/// start of the next pass, so one empty pass runs first).
+fn lab_context() -> egui::Context {
     let ctx = egui::Context::default();
+    ctx.set_fonts(super::fonts::definitions());
+    ctx.run_ui(egui::RawInput::default(), |_| {})
+        .drop_without_applying_deltas();
+    ctx
+}
+
+/// Runs `f` inside an egui pass with the lab's fonts installed.
+fn with_fonts<R>(f: impl FnOnce(&mut FontsView<'_>) -> R) -> R {
+    let ctx = lab_context();
     let mut f = Some(f);
     let mut result = None;
     let output = ctx.run_ui(egui::RawInput::default(), |ui| {
@@ -254,7 +264,7 @@ fn inline_placement_keeps_the_text_baseline() {
 fn widgets_allocate_their_layout() {
     let math = parse("v = r\\dot\\varphi + \\frac{1}{2} \\begin{pmatrix} a \\\\ b \\end{pmatrix}")
         .expect("parses");
-    let ctx = egui::Context::default();
+    let ctx = lab_context();
     let mut rects = Vec::new();
     let output = ctx.run_ui(egui::RawInput::default(), |ui| {
         ui.horizontal_wrapped(|ui| {
@@ -281,7 +291,7 @@ fn widgets_allocate_their_layout() {
 #[test]
 fn baseline_matches_labels_in_a_sized_row() {
     let math = parse("\\frac{a}{b} + x^2").expect("parses");
-    let ctx = egui::Context::default();
+    let ctx = lab_context();
     let mut rects = Vec::new();
     let output = ctx.run_ui(egui::RawInput::default(), |ui| {
         ui.horizontal_wrapped(|ui| {

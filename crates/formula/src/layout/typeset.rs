@@ -354,106 +354,14 @@ impl<'f, 'v> Typesetter<'f, 'v> {
         let body = self.node(body, level, depth);
         let stroke = stroke_width(size);
         let base_y = -body.ascent.max(self.x_height(size)) - 0.1 * size;
-        let wide = |fraction: f32| (body.width * fraction).max(0.4 * size);
-        let (paints, width, height) = match kind {
-            AccentKind::Dot | AccentKind::Ddot => {
-                let radius = (0.065 * size).max(0.9);
-                let center_y = base_y - radius;
-                let offsets: &[f32] = if kind == AccentKind::Dot {
-                    &[0.0]
-                } else {
-                    &[-0.13, 0.13]
-                };
-                let paints = offsets
-                    .iter()
-                    .map(|dx| Paint::Dot {
-                        center: pos2(dx * size, center_y),
-                        radius,
-                    })
-                    .collect();
-                (paints, 0.26 * size + 2.0 * radius, 2.0 * radius)
-            }
-            AccentKind::Hat => {
-                let width = wide(0.8);
-                let height = 0.16 * size + 0.04 * width;
-                let points = vec![
-                    pos2(-width / 2.0, base_y),
-                    pos2(0.0, base_y - height),
-                    pos2(width / 2.0, base_y),
-                ];
-                (
-                    vec![Paint::Line {
-                        points,
-                        width: stroke,
-                    }],
-                    width,
-                    height,
-                )
-            }
-            AccentKind::Bar => {
-                let width = (body.width - 0.1 * size).max(0.35 * size);
-                let y = base_y - stroke / 2.0;
-                let points = vec![pos2(-width / 2.0, y), pos2(width / 2.0, y)];
-                (
-                    vec![Paint::Line {
-                        points,
-                        width: stroke,
-                    }],
-                    width,
-                    stroke,
-                )
-            }
-            AccentKind::Vec => {
-                let width = wide(0.9);
-                let head = 0.13 * size;
-                let y = base_y - 0.7 * head;
-                let tip = width / 2.0;
-                let shaft = vec![pos2(-tip, y), pos2(tip, y)];
-                let arrow_head = vec![
-                    pos2(tip - head, y - 0.7 * head),
-                    pos2(tip, y),
-                    pos2(tip - head, y + 0.7 * head),
-                ];
-                let paints = vec![
-                    Paint::Line {
-                        points: shaft,
-                        width: stroke,
-                    },
-                    Paint::Line {
-                        points: arrow_head,
-                        width: stroke,
-                    },
-                ];
-                (paints, width, 1.4 * head)
-            }
-            AccentKind::Tilde => {
-                let width = wide(0.8);
-                let amplitude = 0.06 * size;
-                let center_y = base_y - amplitude;
-                let points = (0..=16)
-                    .map(|i| {
-                        let u = i as f32 / 16.0;
-                        pos2((u - 0.5) * width, center_y - amplitude * (TAU * u).sin())
-                    })
-                    .collect();
-                (
-                    vec![Paint::Line {
-                        points,
-                        width: stroke,
-                    }],
-                    width,
-                    2.0 * amplitude,
-                )
-            }
-        };
-
-        let total_width = body.width.max(width);
+        let mark = AccentMark::new(kind, body.width, base_y, size, stroke);
+        let total_width = body.width.max(mark.width);
         let center_x = total_width / 2.0;
         let body_width = body.width;
         let mut out = MathBox::spacer(total_width);
         out.place(body, vec2((total_width - body_width) / 2.0, 0.0));
-        let top = base_y - height - stroke / 2.0;
-        for paint in paints {
+        let top = base_y - mark.height - stroke / 2.0;
+        for paint in mark.paints {
             out.draw(paint.translated(vec2(center_x, 0.0)), top, 0.0);
         }
         out
@@ -655,5 +563,97 @@ pub(super) fn column_gap(kind: MatrixKind, column: usize, size: f32) -> f32 {
         MatrixKind::Aligned if column.is_multiple_of(2) => 0.0,
         MatrixKind::Aligned | MatrixKind::Cases => 1.2 * size,
         _ => 0.8 * size,
+    }
+}
+
+/// The strokes of an accent, centred on x = 0 and sitting on `base_y`.
+struct AccentMark {
+    paints: Vec<Paint>,
+    width: f32,
+    height: f32,
+}
+
+impl AccentMark {
+    fn new(kind: AccentKind, body_width: f32, base_y: f32, size: f32, stroke: f32) -> Self {
+        let wide = |fraction: f32| (body_width * fraction).max(0.4 * size);
+        let line = |points| Paint::Line {
+            points,
+            width: stroke,
+        };
+        match kind {
+            AccentKind::Dot => Self::dots(&[0.0], base_y, size),
+            AccentKind::Ddot => Self::dots(&[-0.13, 0.13], base_y, size),
+            AccentKind::Hat => {
+                let width = wide(0.8);
+                let height = 0.16 * size + 0.04 * width;
+                let points = vec![
+                    pos2(-width / 2.0, base_y),
+                    pos2(0.0, base_y - height),
+                    pos2(width / 2.0, base_y),
+                ];
+                Self::single(line(points), width, height)
+            }
+            AccentKind::Bar => {
+                let width = (body_width - 0.1 * size).max(0.35 * size);
+                let y = base_y - stroke / 2.0;
+                let points = vec![pos2(-width / 2.0, y), pos2(width / 2.0, y)];
+                Self::single(line(points), width, stroke)
+            }
+            AccentKind::Vec => {
+                let width = wide(0.9);
+                let head = 0.13 * size;
+                let y = base_y - 0.7 * head;
+                let tip = width / 2.0;
+                let arrow_head = vec![
+                    pos2(tip - head, y - 0.7 * head),
+                    pos2(tip, y),
+                    pos2(tip - head, y + 0.7 * head),
+                ];
+                let paints = vec![line(vec![pos2(-tip, y), pos2(tip, y)]), line(arrow_head)];
+                Self {
+                    paints,
+                    width,
+                    height: 1.4 * head,
+                }
+            }
+            AccentKind::Tilde => {
+                let width = wide(0.8);
+                let amplitude = 0.06 * size;
+                let center_y = base_y - amplitude;
+                let points = (0..=16)
+                    .map(|i| {
+                        let u = i as f32 / 16.0;
+                        pos2((u - 0.5) * width, center_y - amplitude * (TAU * u).sin())
+                    })
+                    .collect();
+                Self::single(line(points), width, 2.0 * amplitude)
+            }
+        }
+    }
+
+    fn single(paint: Paint, width: f32, height: f32) -> Self {
+        Self {
+            paints: vec![paint],
+            width,
+            height,
+        }
+    }
+
+    /// One dot per offset (in ems) from the centre.
+    fn dots(offsets: &[f32], base_y: f32, size: f32) -> Self {
+        let radius = (0.065 * size).max(0.9);
+        let center_y = base_y - radius;
+        let paints = offsets
+            .iter()
+            .map(|dx| Paint::Dot {
+                center: pos2(dx * size, center_y),
+                radius,
+            })
+            .collect();
+        Self {
+            paints,
+            width: 0.26 * size + 2.0 * radius,
+            height: 2.0 * radius,
+        }
     }
 }
