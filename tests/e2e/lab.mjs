@@ -110,6 +110,15 @@ try {
     }
   });
 
+  await check("the behaviour and potential-field lessons open with their widgets", async () => {
+    for (const address of ["behaviours/coordination", "behaviours/building-in-layers", "potential-fields/local-minima", "potential-fields/ways-out"]) {
+      await page.goto(`${server.url}#/${address}`);
+      await waitForPage(page, address);
+      await page.waitForTimeout(800);
+    }
+    await page.screenshot({ path: `${out}/ways-out.png` });
+  });
+
   await check("no error box and no panic text", async () => {
     const text = await page.evaluate(() => document.body.innerText);
     assert.ok(!/panicked|internal error|could not start/i.test(text), text);
@@ -137,6 +146,9 @@ try {
     await embed.selectOption("#mechanism", "planar-2r");
     assert.equal(await embed.inputValue("#joints"), "0.00, 0.00");
     assert.equal(await embed.textContent("#fk-out"), "Planar 2R arm: tool at (1.800, 0.000, 0.000) m");
+    assert.equal(await embed.textContent("#field-out"), "A U-shaped wall: trapped at (3.75, 0.00)");
+    await embed.selectOption("#field", "rock-on-the-axis");
+    assert.equal(await embed.textContent("#field-out"), "A rock on the axis: no trap");
     await embed.screenshot({ path: `${out}/embed.png`, fullPage: true });
   });
 

@@ -8,6 +8,7 @@
 
 use std::hint::black_box;
 
+pub mod behaviour;
 pub mod mechanism;
 #[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
 pub mod reference;
@@ -200,6 +201,26 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "mech_ik_panda_100_targets",
         run: mechanism::ik_panda_100,
+    },
+    Kernel {
+        name: "field_vector_8",
+        run: behaviour::field_vector,
+    },
+    Kernel {
+        name: "field_arrows_64x64",
+        run: behaviour::field_arrows,
+    },
+    Kernel {
+        name: "field_minima_8",
+        run: behaviour::field_minima,
+    },
+    Kernel {
+        name: "world_step_16_rays_50_obstacles",
+        run: behaviour::world_step,
+    },
+    Kernel {
+        name: "arena_frame_100_robots",
+        run: behaviour::arena_frame,
     },
 ];
 

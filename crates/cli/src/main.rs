@@ -4,6 +4,7 @@
 //! with status 2 and one line on stderr naming the file or option and the
 //! field; nothing ever prints a panic or a backtrace.
 
+mod behaviour;
 mod control;
 mod mechanism;
 mod wheels;
@@ -119,6 +120,38 @@ enum Command {
         #[arg(long)]
         frame: Option<String>,
     },
+    /// A potential field: its vector at points, its stable equilibria in a box, or a point robot's descent.
+    Field {
+        /// A field file (`*.field.json`, see the contract), or `catalogue:<id>`.
+        field: PathBuf,
+        /// Points, m: X,Y[;X,Y...]
+        #[arg(long, value_name = "X,Y;X,Y;...", allow_hyphen_values = true)]
+        at: Option<String>,
+        /// Find every stable equilibrium inside --box.
+        #[arg(long)]
+        minima: bool,
+        /// The box to search, m: XMIN,YMIN,XMAX,YMAX
+        #[arg(
+            long = "box",
+            value_name = "XMIN,YMIN,XMAX,YMAX",
+            allow_hyphen_values = true
+        )]
+        area: Option<String>,
+        /// Descend from this start, m: X,Y
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+        descend: Option<String>,
+        /// Step length H of the descent, m (default 0.01).
+        #[arg(long, allow_hyphen_values = true)]
+        step: Option<f64>,
+        /// Most steps of the descent (default 10000).
+        #[arg(long)]
+        max_steps: Option<usize>,
+    },
+    /// Run behaviours in a world: the trajectory, who had control when, the events and metrics.
+    Run {
+        /// A behaviour run file (`*.run.json`, see the README).
+        run: PathBuf,
+    },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
         /// A lessons folder to check; the embedded lessons when omitted.
@@ -200,6 +233,26 @@ fn run(command: Command) -> Result<Value, Failure> {
             seed.as_deref(),
             frame.as_deref(),
         ),
+        Command::Field {
+            field,
+            at,
+            minima,
+            area,
+            descend,
+            step,
+            max_steps,
+        } => behaviour::field(
+            &field,
+            &behaviour::FieldQuery {
+                at: at.as_deref(),
+                minima,
+                area: area.as_deref(),
+                descend: descend.as_deref(),
+                step,
+                max_steps,
+            },
+        ),
+        Command::Run { run } => behaviour::run(&run),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

@@ -626,3 +626,72 @@ fn a_model_file_mounts_another_file_next_to_it() {
     );
     fails_with(&["fk", &missing, "--q", ""], "mounts[0].model: cannot read");
 }
+
+#[test]
+fn field_follows_the_contract() {
+    let dir = std::env::temp_dir().join(format!("kinolab-cli-field-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // One attractive pull of gain 2 towards (4, 0), constant profile, and
+    // a wall at x = 2 pushing back 3 (1 − d/1): they balance at d = 1/3.
+    let field = dir.join("wall.field.json");
+    std::fs::write(
+        &field,
+        r#"{ "name": "wall", "goal": { "x": 4, "y": 0 }, "fields": [
+            { "kind": "attractive", "x": 4, "y": 0, "gain": 2, "profile": "constant" },
+            { "kind": "perpendicular", "from": [2, -5], "to": [2, 5], "gain": 3, "profile": "linear", "range": 1, "sense": "away" } ] }"#,
+    )
+    .unwrap();
+    let f = field.to_str().unwrap();
+    let v = json(&["field", f, "--at", "0,0;-1,0"]);
+    let got: Vec<Vec<f64>> = serde_json::from_value(v["vectors"].clone()).unwrap();
+    assert_eq!(got, vec![vec![2.0, 0.0], vec![2.0, 0.0]]);
+    let v = json(&["field", f, "--minima", "--box", "-1,-2,5,2"]);
+    let m = &v["minima"][0];
+    assert!(
+        (m["x"].as_f64().unwrap() - (2.0 - 1.0 / 3.0)).abs() < 1e-6,
+        "{v}"
+    );
+    assert_eq!(m["goal"], false);
+    let v = json(&["field", f, "--descend", "0,0"]);
+    assert_eq!(v["outcome"], "trapped");
+    let first: Vec<f64> = serde_json::from_value(v["path"][0].clone()).unwrap();
+    assert_eq!(first, vec![0.0, 0.0]);
+    let (code, _, stderr) = kinolab(&["field", f, "--minima"]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("--box"), "{stderr}");
+    let (code, _, stderr) = kinolab(&["field", f, "--descend", "0,0", "--step", "-1"]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("--step"), "{stderr}");
+    std::fs::write(
+        &field,
+        r#"{ "fields": [ { "kind": "repulsive", "x": 0, "y": 0, "profile": "linear" } ] }"#,
+    )
+    .unwrap();
+    let (code, stdout, stderr) = kinolab(&["field", f, "--at", "1,1"]);
+    assert_eq!((code, stdout.as_str()), (2, ""));
+    assert!(
+        stderr.contains("wall.field.json") && stderr.contains("fields[0].range"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn run_reports_a_behaviour_run() {
+    let examples = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../behaviours/runs/subsumption.run.json"
+    );
+    let v = json(&["run", examples]);
+    assert_eq!(v["metrics"]["reached"], true);
+    assert_eq!(v["metrics"]["collisions"], 0);
+    let names: Vec<&str> = v["control"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|s| s["behaviour"].as_str())
+        .collect();
+    assert!(
+        names.contains(&"go") && names.contains(&"avoid"),
+        "{names:?}"
+    );
+}

@@ -182,3 +182,61 @@ fn locomotion_and_lesson_reports_match() {
         .collect();
     assert_same!(Value::Array(flat), api::lessons().unwrap());
 }
+
+#[test]
+fn field_and_behaviour_reports_match() {
+    let field_file = include_str!("../../fields/presets/goal-behind-a-rock.field.json");
+    let path = file(
+        "rock.field.json",
+        &serde_json::from_str::<Value>(field_file).unwrap(),
+    );
+    let f = || Value::String(field_file.to_owned());
+    assert_same!(
+        cli(&["field", &path, "--at", "1,0.5;-0.2,3;2,0"]),
+        api_ok(kinolab_js::behaviour_api::field_vectors(
+            f(),
+            &[[1.0, 0.5], [-0.2, 3.0], [2.0, 0.0]]
+        )),
+        "field --at"
+    );
+    assert_same!(
+        cli(&[
+            "field",
+            "catalogue:u-shaped-wall",
+            "--minima",
+            "--box",
+            "0,-2.5,7,2.5"
+        ]),
+        api_ok(kinolab_js::behaviour_api::field_minima(
+            Value::String("catalogue:u-shaped-wall".into()),
+            [0.0, -2.5, 7.0, 2.5]
+        )),
+        "field --minima"
+    );
+    assert_same!(
+        cli(&["field", &path, "--descend=0.3,0.2", "--step", "0.02"]),
+        api_ok(kinolab_js::behaviour_api::field_descend(
+            f(),
+            [0.3, 0.2],
+            Some(0.02),
+            None
+        )),
+        "field --descend"
+    );
+    let run_file = include_str!("../../behaviours/runs/voting.run.json");
+    let run_path = file(
+        "voting.run.json",
+        &serde_json::from_str::<Value>(run_file).unwrap(),
+    );
+    assert_same!(
+        cli(&["run", &run_path]),
+        api_ok(kinolab_js::behaviour_api::run_behaviours(Value::String(
+            run_file.to_owned()
+        ))),
+        "run"
+    );
+}
+
+fn api_ok(reply: api::Reply) -> Value {
+    reply.unwrap()
+}

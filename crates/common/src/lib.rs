@@ -4,7 +4,8 @@
 //! - [`display`]: numbers for people, never "−0.00";
 //! - [`random`]: one seeded generator, as a stream and as a hash;
 //! - [`error`]: [`FieldError`], bad input named by its path in the file;
-//! - [`feedback`]: [`Feedback`], what a graded exercise says back.
+//! - [`feedback`]: [`Feedback`], what a graded exercise says back;
+//! - [`geometry`]: a pose in the plane and an axis-aligned rectangle.
 //!
 //! Nothing here knows about robots; the domain crates build on it.
 
@@ -12,6 +13,7 @@ pub mod angle;
 pub mod display;
 pub mod error;
 pub mod feedback;
+pub mod geometry;
 pub mod random;
 
 pub use error::FieldError;

@@ -26,6 +26,15 @@ pub fn unit_hash(seed: u64, a: u64, b: u64) -> f64 {
     to_unit(hash(seed, a, b))
 }
 
+/// A standard normal draw that depends only on the seed and two indices
+/// (Box–Muller on two hashes).
+pub fn gaussian_hash(seed: u64, a: u64, b: u64) -> f64 {
+    // 1 − u lies in (0, 1], so the logarithm is finite.
+    let u = 1.0 - unit_hash(seed, a, b.wrapping_mul(2));
+    let v = unit_hash(seed, a, b.wrapping_mul(2).wrapping_add(1));
+    (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+}
+
 /// The top 53 bits of `bits` as a fraction in [0, 1).
 fn to_unit(bits: u64) -> f64 {
     (bits >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
@@ -110,5 +119,18 @@ mod tests {
         assert_ne!(hash(42, 7, 3), hash(43, 7, 3));
         let mean = (0..20_000).map(|k| unit_hash(9, k, 0)).sum::<f64>() / 20_000.0;
         assert!((mean - 0.5).abs() < 0.0082, "{mean}");
+    }
+
+    #[test]
+    fn hashed_gaussians_are_standard_normal() {
+        let g: Vec<f64> = (0..20_000).map(|k| gaussian_hash(5, k, 3)).collect();
+        let mean = g.iter().sum::<f64>() / g.len() as f64;
+        let var = g.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / g.len() as f64;
+        assert!(
+            mean.abs() < 0.03 && (var - 1.0).abs() < 0.05,
+            "{mean} {var}"
+        );
+        assert_eq!(gaussian_hash(5, 10, 3), gaussian_hash(5, 10, 3));
+        assert_ne!(gaussian_hash(5, 10, 3), gaussian_hash(5, 10, 4));
     }
 }

@@ -13,11 +13,11 @@ use serde_json::Value;
 /// A report as JSON, or a one-line error.
 pub type Reply = Result<Value, String>;
 
-fn reply(report: &impl Serialize) -> Reply {
+pub(crate) fn reply(report: &impl Serialize) -> Reply {
     Ok(tidy_report(report))
 }
 
-fn text(e: FieldError) -> String {
+pub(crate) fn text(e: FieldError) -> String {
     e.to_string()
 }
 

@@ -11,6 +11,7 @@
 //!   start: { x: -1, y: 0.5, theta_deg: 0 }, goal: { x: 0, y: 0, theta_deg: 0 } }).reached; // true
 //! const arm = kinolab.Mechanism.load("catalogue:planar-2r");
 //! arm.ik({ position: [1.2, 0.6, 0] }).converged;        // true
+//! kinolab.fieldMinima("catalogue:u-shaped-wall", [0, -2.5, 7, 2.5]).minima.length; // 2
 //! ```
 //!
 //! Every function computes with the same core crates as the lab and the
@@ -19,6 +20,7 @@
 //! whose message names the field.
 
 pub mod api;
+pub mod behaviour_api;
 mod mechanism;
 pub mod mechanism_api;
 
@@ -196,4 +198,52 @@ pub fn batch_simulate(
 #[wasm_bindgen(js_name = controllerStability)]
 pub fn controller_stability(k_rho: f64, k_alpha: f64, k_beta: f64) -> Result<JsValue, JsError> {
     to_js(api::controller_stability(k_rho, k_alpha, k_beta))
+}
+
+// ---------------------------------------------------------------- behaviours
+
+/// What `kinolab field --at` prints: `{ vectors: [[fx, fy], …] }`, one per
+/// point, for a field-file object, its JSON text, or `"catalogue:<id>"`.
+#[wasm_bindgen(js_name = fieldVectors)]
+pub fn field_vectors(field: JsValue, at: JsValue) -> Result<JsValue, JsError> {
+    let at: Vec<[f64; 2]> = typed("at", at)?;
+    to_js(behaviour_api::field_vectors(from_js("field", field)?, &at))
+}
+
+/// What `kinolab field --minima --box` prints: `{ minima: [{ x, y, goal }] }`.
+#[wasm_bindgen(js_name = fieldMinima)]
+pub fn field_minima(field: JsValue, area: JsValue) -> Result<JsValue, JsError> {
+    let area: [f64; 4] = typed("box", area)?;
+    to_js(behaviour_api::field_minima(from_js("field", field)?, area))
+}
+
+/// What `kinolab field --descend` prints: `{ path, outcome, end }`.
+/// `step` (m) and `maxSteps` may be left out (0.01 m, 10 000 steps).
+#[wasm_bindgen(js_name = fieldDescend)]
+pub fn field_descend(
+    field: JsValue,
+    start: JsValue,
+    step: Option<f64>,
+    max_steps: Option<usize>,
+) -> Result<JsValue, JsError> {
+    let start: [f64; 2] = typed("start", start)?;
+    to_js(behaviour_api::field_descend(
+        from_js("field", field)?,
+        start,
+        step,
+        max_steps,
+    ))
+}
+
+/// What `kinolab run` prints for a behaviour run file (object or JSON
+/// text): `{ samples, control, events, metrics }`.
+#[wasm_bindgen(js_name = runBehaviours)]
+pub fn run_behaviours(run: JsValue) -> Result<JsValue, JsError> {
+    to_js(behaviour_api::run_behaviours(from_js("run", run)?))
+}
+
+/// The example worlds' ids and the classic fields: `{ worlds, fields }`.
+#[wasm_bindgen]
+pub fn catalogues() -> Result<JsValue, JsError> {
+    to_js(behaviour_api::catalogues())
 }

@@ -181,3 +181,26 @@ fn mechanisms_through_the_js_api() {
         "{message}"
     );
 }
+
+#[wasm_bindgen_test]
+fn fields_and_behaviours_through_the_js_api() {
+    let field = JsValue::from_str("catalogue:u-shaped-wall");
+    let area = serde_wasm_bindgen::to_value(&[0.0, -2.5, 7.0, 2.5]).unwrap();
+    let m = get(
+        &kinolab_js::field_minima(field.clone(), area).unwrap(),
+        "minima",
+    );
+    // The trap where the back wall's push 2 (1 − d/0.5) meets the pull 1,
+    // and the goal.
+    let trap = get(&m, "0");
+    assert!((get(&trap, "x").as_f64().unwrap() - 3.75).abs() < 1e-9);
+    assert_eq!(get(&get(&m, "1"), "goal").as_bool(), Some(true));
+    let start = serde_wasm_bindgen::to_value(&[0.5, 0.3]).unwrap();
+    let d = kinolab_js::field_descend(field, start, None, None).unwrap();
+    assert_eq!(get(&d, "outcome").as_string().unwrap(), "trapped");
+    let run = JsValue::from_str(include_str!("../../behaviours/runs/subsumption.run.json"));
+    let r = kinolab_js::run_behaviours(run).unwrap();
+    assert_eq!(get(&get(&r, "metrics"), "reached").as_bool(), Some(true));
+    let bad = kinolab_js::field_minima(JsValue::from_str("catalogue:nowhere"), JsValue::NULL);
+    assert!(bad.is_err());
+}

@@ -450,6 +450,137 @@ pub static WIDGETS: &[WidgetSchema] = &[
         ],
         rules: Some(dh_rules),
     },
+    WidgetSchema {
+        name: "field-sandbox",
+        summary: "paint a potential field with the five primitives; find its minima; follow it; try the remedies",
+        params: &[
+            param(
+                "preset",
+                Kind::Catalogue {
+                    of: Catalogue::Fields,
+                },
+                Some("goal-behind-a-rock"),
+                "the field to start from",
+            ),
+            param("streamlines", YES_NO, Some("yes"), "draw streamlines"),
+            param("shading", YES_NO, Some("yes"), "shade the field's strength"),
+            param(
+                "unicycle",
+                YES_NO,
+                Some("no"),
+                "also drive a unicycle along the field",
+            ),
+            param(
+                "remedies",
+                YES_NO,
+                Some("no"),
+                "show the remedies and the steps each needs",
+            ),
+            param(
+                "editable",
+                YES_NO,
+                Some("yes"),
+                "let the learner add, remove and change primitives",
+            ),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["vector-at", "escape", "stand-off"],
+                },
+                None,
+                "an exercise: compute the vector at a point, add one field to escape, or set a wall's range and gain",
+            ),
+            param(
+                "at",
+                Kind::Numbers {
+                    min_count: 2,
+                    max_count: 2,
+                    min: -100.0,
+                    max: 100.0,
+                },
+                None,
+                "the point of `task: vector-at` (x, y in m)",
+            ),
+            param(
+                "clearance",
+                Kind::Number {
+                    min: 0.05,
+                    max: 2.0,
+                },
+                None,
+                "how far from the wall the robot must stop in `task: stand-off` (m)",
+            ),
+        ],
+        rules: Some(sandbox_rules),
+    },
+    WidgetSchema {
+        name: "behaviour-arena",
+        summary: "a robot, its behaviours and a coordinator in a world: watch who has control, step and scrub",
+        params: &[
+            param(
+                "world",
+                Kind::Catalogue {
+                    of: Catalogue::Worlds,
+                },
+                Some("scattered"),
+                "the world to start in",
+            ),
+            param(
+                "set",
+                Kind::Choice {
+                    options: &["goal-and-avoid", "explore", "light"],
+                },
+                Some("goal-and-avoid"),
+                "which behaviours the robot has",
+            ),
+            param(
+                "coordinator",
+                Kind::Choice {
+                    options: &["sum", "subsumption", "voting", "sequencer"],
+                },
+                Some("sum"),
+                "how the behaviours are coordinated at first",
+            ),
+            param(
+                "seed",
+                Kind::Integer {
+                    min: 0,
+                    max: 1_000_000,
+                },
+                Some("1"),
+                "the run's seed",
+            ),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["layers"],
+                },
+                None,
+                "an exercise: order the layers and place one node so the robot reaches the goal without a collision on three worlds",
+            ),
+        ],
+        rules: Some(arena_rules),
+    },
+    WidgetSchema {
+        name: "braitenberg",
+        summary: "Braitenberg vehicles and lights: wire each vehicle and watch its character",
+        params: &[param(
+            "vehicles",
+            Kind::Text {
+                example: "love, aggression",
+                check: check_vehicles,
+            },
+            Some("love, fear"),
+            "the vehicles, by character (fear, aggression, love, explorer), comma-separated, at most four",
+        )],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "blend-or-choose",
+        summary: "a frog and two flies: blending the two pulls misses both, choosing one catches it",
+        params: &[],
+        rules: None,
+    },
 ];
 
 /// `a, alpha_deg, d, theta_deg`, with a and d within ±2 m (angles are
@@ -564,4 +695,62 @@ fn viewer_rules(p: &Params) -> Result<(), String> {
         },
         _ => Ok(()),
     }
+}
+
+fn sandbox_rules(p: &Params) -> Result<(), String> {
+    let task = p.choice("task");
+    if task == Some("vector-at") && p.numbers("at").is_none() {
+        return Err("`task: vector-at` needs `at: x, y`".into());
+    }
+    if p.given("at") && task != Some("vector-at") {
+        return Err("`at` goes with `task: vector-at`".into());
+    }
+    if p.given("clearance") && task != Some("stand-off") {
+        return Err("`clearance` goes with `task: stand-off`".into());
+    }
+    let preset = p.choice("preset").unwrap_or("goal-behind-a-rock");
+    let field = kinolab_fields::catalogue::preset(preset)
+        .ok_or_else(|| format!("no field preset `{preset}`"))?
+        .field()
+        .map_err(|e| e.to_string())?;
+    if task == Some("stand-off")
+        && !field
+            .primitives
+            .iter()
+            .any(|q| matches!(q.source, kinolab_fields::Source::Perpendicular { .. }))
+    {
+        return Err(format!(
+            "`task: stand-off` needs a preset with a wall; `{preset}` has none"
+        ));
+    }
+    if matches!(task, Some("escape" | "stand-off")) && field.goal.is_none() {
+        return Err(format!(
+            "`task` needs a preset with a goal; `{preset}` has none"
+        ));
+    }
+    Ok(())
+}
+
+fn arena_rules(p: &Params) -> Result<(), String> {
+    if p.choice("task") == Some("layers")
+        && p.choice("coordinator").unwrap_or("sum") != "subsumption"
+    {
+        return Err("`task: layers` needs `coordinator: subsumption`".into());
+    }
+    Ok(())
+}
+
+fn check_vehicles(text: &str) -> Result<(), String> {
+    let names: Vec<&str> = text.split(',').map(str::trim).collect();
+    if names.is_empty() || names.len() > 4 {
+        return Err(format!("lists {} vehicles; give one to four", names.len()));
+    }
+    for n in names {
+        if !["fear", "aggression", "love", "explorer"].contains(&n) {
+            return Err(format!(
+                "has `{n}`: the characters are fear, aggression, love and explorer"
+            ));
+        }
+    }
+    Ok(())
 }

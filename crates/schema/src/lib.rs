@@ -93,6 +93,10 @@ pub enum Catalogue {
     Robots,
     /// Mechanisms (`catalogue:<id>` model files).
     Mechanisms,
+    /// Example worlds for behaviours (`kinolab run` accepts their ids).
+    Worlds,
+    /// Classic potential fields and their failures.
+    Fields,
 }
 
 impl Catalogue {
@@ -106,6 +110,14 @@ impl Catalogue {
             Catalogue::Mechanisms => kinolab_mechanism::catalogue::CATALOGUE
                 .iter()
                 .map(|(id, _, _)| *id)
+                .collect(),
+            Catalogue::Worlds => kinolab_world::catalogue::WORLDS
+                .iter()
+                .map(|(id, _)| *id)
+                .collect(),
+            Catalogue::Fields => kinolab_fields::catalogue::PRESETS
+                .iter()
+                .map(|p| p.id)
                 .collect(),
         }
     }

@@ -8,7 +8,10 @@
 //! - [`autonomy`]: closed and open worlds;
 //! - [`wheels`]: wheel constraints, drive configurations, frames;
 //! - [`control`]: speed profiles and the go-to-pose controller;
-//! - [`mechanism`]: DH links and mechanism models.
+//! - [`mechanism`]: DH links and mechanism models;
+//! - [`fields`]: potential fields and their traps;
+//! - [`behaviour`]: behaviours and their coordination, Braitenberg's
+//!   vehicles, blending against choosing.
 //!
 //! Shared pieces: [`widget`] (the trait every widget implements and the
 //! small helpers they share), [`draw`] (one world↔screen view, draggable
@@ -20,9 +23,11 @@
 //! (`kinolab-app`) hosts these widgets, as egui's demo app hosts its demos.
 
 pub mod autonomy;
+pub mod behaviour;
 pub mod control;
 pub mod draw;
 pub mod export;
+pub mod fields;
 pub mod link;
 pub mod locomotion;
 pub mod mechanism;

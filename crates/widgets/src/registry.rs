@@ -8,7 +8,7 @@
 use kinolab_lessons::WidgetSpec;
 
 use crate::widget::{Constructor, LabWidget};
-use crate::{autonomy, control, locomotion, mechanism, wheels};
+use crate::{autonomy, behaviour, control, fields, locomotion, mechanism, wheels};
 
 /// Every widget's constructor, by its schema name.
 pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
@@ -22,6 +22,10 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("controller-playground", control::playground::create),
     ("mechanism-viewer", mechanism::viewer::create),
     ("dh-link", mechanism::dh_link::create),
+    ("field-sandbox", fields::sandbox::create),
+    ("behaviour-arena", behaviour::arena::create),
+    ("braitenberg", behaviour::braitenberg::create),
+    ("blend-or-choose", behaviour::frog::create),
 ];
 
 /// Make the widget a lesson block names, or say why not (the same message
@@ -35,9 +39,9 @@ pub fn create(spec: &WidgetSpec) -> Result<Box<dyn LabWidget>, String> {
     constructor(&params)
 }
 
-/// A widget block as a lesson would write it, for tests.
-#[cfg(test)]
-pub(crate) fn test_spec(name: &str, params: &[(&str, &str)]) -> WidgetSpec {
+/// A widget block as a lesson would write it (for tests, and for hosts that
+/// build a widget without a lesson).
+pub fn spec(name: &str, params: &[(&str, &str)]) -> WidgetSpec {
     WidgetSpec {
         name: name.into(),
         params: params
@@ -62,7 +66,7 @@ mod tests {
     #[test]
     fn every_widget_builds_with_its_defaults() {
         for (name, _) in CONSTRUCTORS {
-            if let Err(e) = create(&test_spec(name, &[])) {
+            if let Err(e) = create(&spec(name, &[])) {
                 panic!("{name}: {e}");
             }
         }
@@ -70,14 +74,14 @@ mod tests {
 
     #[test]
     fn bad_blocks_say_what_and_where() {
-        let Err(message) = create(&test_spec("flux-capacitor", &[])) else {
+        let Err(message) = create(&spec("flux-capacitor", &[])) else {
             panic!("an unknown widget was built")
         };
         assert!(
             message.starts_with("line 1: there is no widget named `flux-capacitor`"),
             "{message}"
         );
-        let Err(message) = create(&test_spec("leg-events", &[("legs", "many")])) else {
+        let Err(message) = create(&spec("leg-events", &[("legs", "many")])) else {
             panic!("a bad parameter was accepted")
         };
         assert_eq!(

@@ -1,11 +1,13 @@
 //! The drawing pieces every widget shares: one world↔screen view for
 //! plane drawings ([`PlaneView`]), draggable handles with accessible names
-//! ([`handle`]), grids and axes, a small 3D camera ([`scene3d`]), and
-//! labels that keep out of each other's way ([`labels`]).
+//! ([`handle`]), grids and axes, a small 3D camera ([`scene3d`]),
+//! labels that keep out of each other's way ([`labels`]), and small marks
+//! (arrows, crosses, stars, dashed circles: [`marks`]).
 
 mod grid;
 mod handle;
 pub mod labels;
+pub mod marks;
 pub mod scene3d;
 mod view;
 

@@ -248,15 +248,15 @@ impl LabWidget for DhLink {
 
 #[cfg(test)]
 mod tests {
-    use crate::registry::{create, test_spec};
+    use crate::registry::{create, spec};
 
     #[test]
     fn rows_round_trip_through_links() {
-        let spec = test_spec(
+        let block = spec(
             "dh-link",
             &[("row", "0.5, 90, 0.2, 30"), ("convention", "modified")],
         );
-        let Ok(mut w) = create(&spec) else {
+        let Ok(mut w) = create(&block) else {
             panic!("the row is valid")
         };
         assert_eq!(w.state(), None, "as the lesson set it up");
@@ -266,7 +266,7 @@ mod tests {
         // Out-of-range values from a damaged link are clamped, never kept.
         w.restore(&crate::link::encode(&[9.0, 0.0, 0.0, 0.0]).unwrap_or_default());
         assert_eq!(w.state(), crate::link::encode(&[1.0, 0.0, 0.0, 0.0]));
-        assert!(create(&test_spec("dh-link", &[("row", "1, 2, 3")])).is_err());
-        assert!(create(&test_spec("dh-link", &[("convention", "craig")])).is_err());
+        assert!(create(&spec("dh-link", &[("row", "1, 2, 3")])).is_err());
+        assert!(create(&spec("dh-link", &[("convention", "craig")])).is_err());
     }
 }

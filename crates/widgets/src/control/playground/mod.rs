@@ -191,11 +191,11 @@ impl LabWidget for Playground {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::registry::{create as build, test_spec};
+    use crate::registry::{create as build, spec};
 
     #[test]
     fn lesson_parameters_reach_the_settings() {
-        let spec = test_spec(
+        let block = spec(
             "controller-playground",
             &[
                 ("view", "many"),
@@ -204,8 +204,8 @@ mod tests {
                 ("start", "-1, 0.5, 90"),
             ],
         );
-        assert!(build(&spec).is_ok());
-        let Ok(p) = kinolab_schema::validate(&spec) else {
+        assert!(build(&block).is_ok());
+        let Ok(p) = kinolab_schema::validate(&block) else {
             panic!()
         };
         let s = pose_of(&p, "start");
@@ -218,7 +218,7 @@ mod tests {
             ("start", "1,2"),
         ] {
             assert!(
-                build(&test_spec("controller-playground", &[(k, v)])).is_err(),
+                build(&spec("controller-playground", &[(k, v)])).is_err(),
                 "{k}: {v}"
             );
         }

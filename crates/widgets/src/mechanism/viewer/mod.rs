@@ -335,10 +335,10 @@ impl LabWidget for Viewer {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::registry::{create as build, test_spec};
+    use crate::registry::create as build;
 
     fn spec(params: &[(&str, &str)]) -> kinolab_lessons::WidgetSpec {
-        test_spec("mechanism-viewer", params)
+        crate::registry::spec("mechanism-viewer", params)
     }
 
     #[test]

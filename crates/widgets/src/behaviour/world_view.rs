@@ -1,0 +1,144 @@
+//! Drawing a world and the robots in it, shared by the behaviour widgets.
+
+use egui::{Color32, Painter, Pos2, Shape, Stroke, vec2};
+use kinolab_world::{Pose, Shape as Obstacle, World};
+
+use crate::draw::PlaneView;
+use crate::draw::marks::star;
+
+/// A colour per behaviour, distinct in both themes.
+pub const PALETTE: [Color32; 6] = [
+    Color32::from_rgb(70, 140, 230),
+    Color32::from_rgb(230, 90, 70),
+    Color32::from_rgb(60, 170, 90),
+    Color32::from_rgb(200, 140, 30),
+    Color32::from_rgb(160, 90, 200),
+    Color32::from_rgb(40, 170, 170),
+];
+
+/// The colour of behaviour `i`.
+pub fn colour(i: usize) -> Color32 {
+    PALETTE[i % PALETTE.len()]
+}
+
+/// The fence, the obstacles where they are at time `t`, lights and goal.
+pub fn draw_world(ui: &egui::Ui, painter: &Painter, view: &PlaneView, world: &World, t: f64) {
+    let ink = ui.visuals().text_color();
+    let solid = if ui.visuals().dark_mode {
+        Color32::from_gray(120)
+    } else {
+        Color32::from_gray(110)
+    };
+    let b = &world.bounds;
+    let fence = egui::Rect::from_two_pos(
+        view.to_screen([b.x_min, b.y_min]),
+        view.to_screen([b.x_max, b.y_max]),
+    );
+    painter.rect_filled(fence, 4.0, ui.visuals().extreme_bg_color);
+    painter.rect_stroke(
+        fence,
+        4.0,
+        Stroke::new(2.0, solid),
+        egui::StrokeKind::Middle,
+    );
+    for (_, shape) in world.obstacles_at(t) {
+        draw_obstacle(painter, view, &shape, solid);
+    }
+    for light in &world.lights {
+        let at = view.to_screen([light.x, light.y]);
+        let glow = Color32::from_rgb(250, 200, 40);
+        painter.circle_filled(at, 14.0, glow.gamma_multiply(0.25));
+        painter.circle_filled(at, 6.0, glow);
+        for k in 0..8 {
+            let a = k as f32 * std::f32::consts::FRAC_PI_4;
+            let d = vec2(a.cos(), a.sin());
+            painter.line_segment([at + d * 9.0, at + d * 13.0], Stroke::new(1.5, glow));
+        }
+    }
+    if let Some(g) = world.goal {
+        star(
+            painter,
+            view.to_screen([g.x, g.y]),
+            10.0,
+            Color32::from_rgb(60, 170, 90),
+            Stroke::new(1.0, ink),
+        );
+    }
+}
+
+fn draw_obstacle(painter: &Painter, view: &PlaneView, shape: &Obstacle, colour: Color32) {
+    match shape {
+        Obstacle::Disc { centre, radius } => {
+            painter.circle_filled(
+                view.to_screen([centre.x, centre.y]),
+                view.length(*radius),
+                colour,
+            );
+        }
+        Obstacle::Wall {
+            from,
+            to,
+            thickness,
+        } => {
+            let width = view.length(*thickness).max(2.5);
+            let (a, b) = (
+                view.to_screen([from.x, from.y]),
+                view.to_screen([to.x, to.y]),
+            );
+            painter.line_segment([a, b], Stroke::new(width, colour));
+            painter.circle_filled(a, width / 2.0, colour);
+            painter.circle_filled(b, width / 2.0, colour);
+        }
+        Obstacle::Polygon { points } => {
+            let pts: Vec<Pos2> = points.iter().map(|p| view.to_screen([p.x, p.y])).collect();
+            if convex(&pts) {
+                painter.add(Shape::convex_polygon(pts, colour, Stroke::NONE));
+            } else {
+                let mut closed = pts.clone();
+                closed.push(pts[0]);
+                painter.add(Shape::line(closed, Stroke::new(3.0, colour)));
+            }
+        }
+    }
+}
+
+/// Whether a polygon turns the same way at every corner.
+fn convex(pts: &[Pos2]) -> bool {
+    let n = pts.len();
+    let turns: Vec<f32> = (0..n)
+        .map(|i| {
+            let (a, b, c) = (pts[i], pts[(i + 1) % n], pts[(i + 2) % n]);
+            (b - a).x * (c - b).y - (b - a).y * (c - b).x
+        })
+        .collect();
+    turns.iter().all(|t| *t >= 0.0) || turns.iter().all(|t| *t <= 0.0)
+}
+
+/// A round robot with a nose line showing its heading.
+pub fn draw_robot(
+    painter: &Painter,
+    view: &PlaneView,
+    pose: &Pose,
+    radius: f64,
+    colour: Color32,
+    ink: Color32,
+) {
+    let at = view.to_screen([pose.x, pose.y]);
+    let r = view.length(radius).max(4.0);
+    painter.circle(at, r, colour.gamma_multiply(0.55), Stroke::new(1.5, ink));
+    let nose = at + vec2(pose.theta.cos() as f32, -pose.theta.sin() as f32) * r;
+    painter.line_segment([at, nose], Stroke::new(2.0, ink));
+}
+
+/// A trail of positions.
+pub fn draw_trail(
+    painter: &Painter,
+    view: &PlaneView,
+    points: impl Iterator<Item = [f64; 2]>,
+    colour: Color32,
+) {
+    let pts: Vec<Pos2> = points.map(|p| view.to_screen(p)).collect();
+    if pts.len() > 1 {
+        painter.add(Shape::line(pts, Stroke::new(1.5, colour)));
+    }
+}

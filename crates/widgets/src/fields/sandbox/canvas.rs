@@ -1,0 +1,467 @@
+//! The sandbox's picture: strength shading, arrows, streamlines, the
+//! primitives with their handles, equilibria, the robots' trails and the
+//! basin map.
+
+use egui::{Color32, Mesh, Painter, Pos2, Rect, Sense, Stroke, vec2};
+use kinolab_common::display::fixed;
+use kinolab_fields::basin::Basin;
+use kinolab_fields::descend::Outcome;
+use kinolab_fields::minima::Kind as Equilibrium;
+use kinolab_fields::{Field, Vec2};
+
+use super::Sandbox;
+use super::piece::Kind;
+use crate::draw::marks::{arrow, cross, dashed_circle, star};
+use crate::draw::{PlaneView, handle};
+use crate::theme;
+
+const SHADE_COLUMNS: usize = 60;
+const ARROW_COLUMNS: usize = 22;
+
+fn v(p: [f64; 2]) -> Vec2 {
+    Vec2::new(p[0], p[1])
+}
+
+fn w(p: Vec2) -> [f64; 2] {
+    [p.x, p.y]
+}
+
+/// Colours for the picture, readable in both themes.
+pub(super) struct Ink {
+    pub text: Color32,
+    pub faint: Color32,
+    pub accent: Color32,
+    pub good: Color32,
+    pub bad: Color32,
+    pub obstacle: Color32,
+    pub unicycle: Color32,
+}
+
+impl Ink {
+    pub fn of(ui: &egui::Ui) -> Self {
+        let dark = ui.visuals().dark_mode;
+        let text = ui.visuals().text_color();
+        Self {
+            text,
+            faint: text.gamma_multiply(0.35),
+            accent: theme::accent(ui),
+            good: theme::good_color(ui),
+            bad: theme::warn_color(ui),
+            obstacle: if dark {
+                Color32::from_gray(150)
+            } else {
+                Color32::from_gray(90)
+            },
+            unicycle: if dark {
+                Color32::from_rgb(230, 170, 60)
+            } else {
+                Color32::from_rgb(190, 110, 0)
+            },
+        }
+    }
+}
+
+impl Sandbox {
+    /// Draw the field and take the handles; returns whether a handle is held.
+    pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) -> bool {
+        let area = self.area;
+        let height = (width * (area.height() / area.width()) as f32).clamp(300.0, 560.0);
+        let (rect, response) = ui.allocate_exact_size(vec2(width, height), Sense::hover());
+        let view = PlaneView::fit(
+            rect.shrink(6.0),
+            [area.x_min, area.y_min],
+            [area.x_max, area.y_max],
+        );
+        let painter = ui.painter_at(rect);
+        let ink = Ink::of(ui);
+        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        painter.rect_stroke(
+            rect,
+            6.0,
+            Stroke::new(1.0, ink.faint),
+            egui::StrokeKind::Inside,
+        );
+        if let Some(field) = &self.field {
+            if self.design.shading {
+                shade(&painter, &view, &area, field, ink.accent);
+            }
+            self.draw_basins(&painter, &view, &ink);
+            arrows(&painter, &view, &area, field, ink.faint);
+            if self.design.streamlines {
+                streamlines(&painter, &view, &area, field, ink.text.gamma_multiply(0.55));
+            }
+        }
+        self.draw_pieces(&painter, &view, &ink);
+        self.draw_runs(&painter, &view, &ink);
+        self.draw_equilibria(&painter, &view, &ink);
+        if let Some(at) = self.task.as_ref().and_then(super::exercise::Task::point) {
+            let p = view.to_screen(at);
+            cross(&painter, p, 5.0, Stroke::new(2.0, ink.text));
+            painter.text(
+                p + vec2(8.0, -8.0),
+                egui::Align2::LEFT_BOTTOM,
+                "P",
+                egui::FontId::proportional(15.0),
+                ink.text,
+            );
+        }
+        let held = self.handles(ui, &view);
+        if let (Some(field), Some(at), false) =
+            (&self.field, response.hover_pos(), self.hides_readout())
+        {
+            let p = view.to_world(at);
+            let f = field.vector(v(p));
+            let text = format!(
+                "F({}, {}) = ({}, {}), ‖F‖ = {}",
+                fixed(p[0], 2),
+                fixed(p[1], 2),
+                fixed(f.x, 2),
+                fixed(f.y, 2),
+                fixed(f.norm(), 2)
+            );
+            painter.text(
+                rect.left_top() + vec2(8.0, 6.0),
+                egui::Align2::LEFT_TOP,
+                text,
+                egui::FontId::proportional(13.0),
+                ink.text,
+            );
+        }
+        held
+    }
+
+    fn draw_pieces(&self, painter: &Painter, view: &PlaneView, ink: &Ink) {
+        let thin = Stroke::new(1.2, ink.obstacle);
+        for (i, piece) in self.design.pieces.iter().enumerate() {
+            let chosen = self.selected == Some(i);
+            let stroke = Stroke::new(
+                if chosen { 2.5 } else { 1.5 },
+                if chosen { ink.accent } else { ink.obstacle },
+            );
+            let at = view.to_screen(piece.at);
+            let range = view.length(piece.range);
+            match piece.kind {
+                Kind::Uniform => {
+                    let corner = painter.clip_rect().right_top() + vec2(-46.0, 40.0);
+                    let d = piece.direction_deg.to_radians();
+                    let along = vec2(d.cos() as f32, -d.sin() as f32) * 30.0;
+                    painter.circle_stroke(corner, 22.0, thin);
+                    arrow(painter, corner - along * 0.5, along, 9.0, stroke);
+                }
+                Kind::Attractive => {
+                    if !piece.unlimited || piece.profile == super::piece::ProfileKind::Linear {
+                        dashed_circle(
+                            painter,
+                            at,
+                            range,
+                            Stroke::new(1.0, ink.good.gamma_multiply(0.8)),
+                        );
+                    }
+                    painter.circle_stroke(at, 9.0, Stroke::new(stroke.width, ink.good));
+                }
+                Kind::Repulsive | Kind::Tangential => {
+                    let r = view.length(piece.radius).max(3.0);
+                    painter.circle(at, r, ink.obstacle.gamma_multiply(0.35), stroke);
+                    dashed_circle(painter, at, r + range, Stroke::new(1.0, ink.obstacle));
+                    if piece.kind == Kind::Tangential {
+                        spin_mark(painter, at, r + 10.0, piece.flipped, stroke);
+                    }
+                }
+                Kind::Perpendicular => {
+                    let to = view.to_screen(piece.to);
+                    painter.line_segment([at, to], Stroke::new(stroke.width + 2.0, stroke.color));
+                    let along = (to - at).normalized();
+                    let n = vec2(-along.y, along.x) * range;
+                    for side in [1.0, -1.0] {
+                        let pts = [at + n * side, to + n * side];
+                        painter.extend(egui::Shape::dashed_line(
+                            &pts,
+                            Stroke::new(1.0, ink.obstacle),
+                            5.0,
+                            4.0,
+                        ));
+                    }
+                }
+            }
+        }
+        if let Some(goal) = self.design.goal {
+            star(
+                painter,
+                view.to_screen(goal),
+                10.0,
+                ink.good,
+                Stroke::new(1.0, ink.text),
+            );
+        }
+    }
+
+    fn draw_runs(&self, painter: &Painter, view: &PlaneView, ink: &Ink) {
+        let path = |points: &[[f64; 2]], color: Color32, width: f32| {
+            let pts: Vec<Pos2> = points.iter().map(|p| view.to_screen(*p)).collect();
+            painter.add(egui::Shape::line(pts, Stroke::new(width, color)));
+        };
+        for (run, shown) in self.analysis.remedies.iter().zip(self.design.remedies) {
+            if let (true, Some(d)) = (shown, &run.descent) {
+                path(&d.path, ink.good.gamma_multiply(0.9), 2.0);
+            }
+        }
+        if let Some(d) = &self.analysis.descent {
+            path(&d.path, ink.accent, 2.5);
+            let end = view.to_screen(d.end);
+            match d.outcome {
+                Outcome::Trapped => cross(painter, end, 6.0, Stroke::new(2.5, ink.bad)),
+                _ => {
+                    painter.circle_filled(end, 4.0, ink.accent);
+                }
+            }
+        }
+        if self.design.unicycle
+            && let Some(t) = &self.analysis.trail
+        {
+            let pts: Vec<[f64; 2]> = t.poses.iter().map(|p| [p.x, p.y]).collect();
+            path(&pts, ink.unicycle, 2.0);
+            if let Some(last) = t.poses.last() {
+                let at = view.to_screen([last.x, last.y]);
+                let along = vec2(last.theta.cos() as f32, -last.theta.sin() as f32) * 16.0;
+                arrow(painter, at, along, 7.0, Stroke::new(2.0, ink.unicycle));
+            }
+        }
+        let start = view.to_screen(self.design.start);
+        painter.circle(
+            start,
+            7.0,
+            ink.accent.gamma_multiply(0.3),
+            Stroke::new(2.0, ink.accent),
+        );
+    }
+
+    fn draw_equilibria(&self, painter: &Painter, view: &PlaneView, ink: &Ink) {
+        for e in &self.analysis.equilibria {
+            let at = view.to_screen([e.x, e.y]);
+            let goal = self
+                .design
+                .goal
+                .is_some_and(|g| (v(g) - Vec2::new(e.x, e.y)).norm() < 1e-6);
+            match e.kind {
+                Equilibrium::Stable if goal => {
+                    painter.circle_stroke(at, 13.0, Stroke::new(2.0, ink.good));
+                }
+                Equilibrium::Stable => {
+                    painter.circle_filled(at, 9.0, ink.bad.gamma_multiply(0.25));
+                    cross(painter, at, 7.0, Stroke::new(3.0, ink.bad));
+                }
+                Equilibrium::Saddle => {
+                    let d = 7.0;
+                    let pts = vec![
+                        at + vec2(0.0, -d),
+                        at + vec2(d, 0.0),
+                        at + vec2(0.0, d),
+                        at + vec2(-d, 0.0),
+                        at + vec2(0.0, -d),
+                    ];
+                    painter.add(egui::Shape::line(pts, Stroke::new(2.0, ink.unicycle)));
+                }
+                Equilibrium::Unstable => {
+                    painter.circle_stroke(at, 5.0, Stroke::new(1.5, ink.faint));
+                }
+            }
+        }
+    }
+
+    fn draw_basins(&self, painter: &Painter, view: &PlaneView, ink: &Ink) {
+        let Some(map) = &self.analysis.basins else {
+            return;
+        };
+        let s = &map.starts;
+        let half = vec2(
+            view.length(s.area.width() / s.nx as f64) / 2.0,
+            view.length(s.area.height() / s.ny as f64) / 2.0,
+        );
+        for (k, b) in map.cells.iter().enumerate() {
+            let color = basin_color(*b, ink);
+            let at = view.to_screen(w(s.start(k)));
+            painter.rect_filled(Rect::from_center_size(at, half * 2.0), 0.0, color);
+        }
+    }
+
+    /// Handles for every piece, the start and (when it stands alone) the
+    /// goal. Returns whether one is held.
+    fn handles(&mut self, ui: &mut egui::Ui, view: &PlaneView) -> bool {
+        let mut held = false;
+        let area = self.area;
+        let clamp = |p: [f64; 2]| area.clamp(p[0], p[1]);
+        let base = ui.scope_id().with("sandbox");
+        for i in 0..self.design.pieces.len() {
+            let piece = self.design.pieces[i];
+            if piece.kind == Kind::Uniform || self.edit_mode(i) != Some(false) {
+                continue;
+            }
+            let label = format!("{} field {}", piece.kind.name(), i + 1);
+            let h = handle(ui, base.with(i), view.to_screen(piece.at), 10.0, &label);
+            held |= h.held();
+            if h.clicked() || h.dragged() {
+                self.selected = Some(i);
+            }
+            if h.dragged() {
+                let d = view.delta_to_world(h.moved);
+                let goal_here = self.design.goal.is_some_and(|g| g == piece.at)
+                    && piece.kind == Kind::Attractive;
+                let p = &mut self.design.pieces[i];
+                p.at = clamp([p.at[0] + d[0], p.at[1] + d[1]]);
+                if p.kind == Kind::Perpendicular {
+                    p.to = clamp([p.to[0] + d[0], p.to[1] + d[1]]);
+                }
+                if goal_here {
+                    self.design.goal = Some(p.at);
+                }
+                self.changed();
+            }
+            if piece.kind == Kind::Perpendicular {
+                let h = handle(
+                    ui,
+                    base.with((i, "end")),
+                    view.to_screen(piece.to),
+                    9.0,
+                    &format!("{label}, far end"),
+                );
+                held |= h.held();
+                if h.dragged() {
+                    let d = view.delta_to_world(h.moved);
+                    let p = &mut self.design.pieces[i];
+                    p.to = clamp([p.to[0] + d[0], p.to[1] + d[1]]);
+                    self.changed();
+                }
+            }
+        }
+        let h = handle(
+            ui,
+            base.with("start"),
+            view.to_screen(self.design.start),
+            10.0,
+            "Robot start",
+        );
+        held |= h.held();
+        if h.dragged() {
+            let d = view.delta_to_world(h.moved);
+            self.design.start = clamp([self.design.start[0] + d[0], self.design.start[1] + d[1]]);
+        }
+        held
+    }
+}
+
+fn basin_color(b: Basin, ink: &Ink) -> Color32 {
+    const TRAPS: [Color32; 4] = [
+        Color32::from_rgb(220, 70, 60),
+        Color32::from_rgb(170, 80, 200),
+        Color32::from_rgb(230, 140, 40),
+        Color32::from_rgb(200, 60, 140),
+    ];
+    match b {
+        Basin::Goal => ink.good.gamma_multiply(0.3),
+        Basin::Trap { minimum } => TRAPS[minimum % TRAPS.len()].gamma_multiply(0.35),
+        Basin::Stalled => Color32::from_gray(128).gamma_multiply(0.35),
+        Basin::Wandering => Color32::from_rgb(220, 200, 60).gamma_multiply(0.3),
+    }
+}
+
+/// A small curved arrow showing a tangential field's turn.
+fn spin_mark(painter: &Painter, at: Pos2, r: f32, clockwise: bool, stroke: Stroke) {
+    let sign = if clockwise { 1.0 } else { -1.0 };
+    let pts: Vec<Pos2> = (0..=12)
+        .map(|i| {
+            let a = -0.9 + 1.8 * i as f32 / 12.0;
+            at + vec2(a.cos(), sign * a.sin()) * r
+        })
+        .collect();
+    let end = pts[12];
+    let before = pts[11];
+    painter.add(egui::Shape::line(pts, stroke));
+    arrow(painter, before, (end - before) * 1.5, 7.0, stroke);
+}
+
+/// The field's strength as shading: stronger is darker accent.
+fn shade(
+    painter: &Painter,
+    view: &PlaneView,
+    area: &kinolab_world::Rect,
+    field: &Field,
+    color: Color32,
+) {
+    let nx = SHADE_COLUMNS;
+    let ny = ((nx as f64) * area.height() / area.width())
+        .round()
+        .clamp(4.0, 60.0) as usize;
+    let scale = field.scale() * 0.25;
+    let mut mesh = Mesh::default();
+    let (dx, dy) = (area.width() / nx as f64, area.height() / ny as f64);
+    for j in 0..ny {
+        for i in 0..nx {
+            let p = [
+                area.x_min + (i as f64 + 0.5) * dx,
+                area.y_min + (j as f64 + 0.5) * dy,
+            ];
+            let m = field.vector(v(p)).norm();
+            let t = (1.0 - (-m / scale).exp()) as f32;
+            let a = view.to_screen([p[0] - dx / 2.0, p[1] + dy / 2.0]);
+            let b = view.to_screen([p[0] + dx / 2.0, p[1] - dy / 2.0]);
+            mesh.add_colored_rect(Rect::from_two_pos(a, b), color.gamma_multiply(0.35 * t));
+        }
+    }
+    painter.add(mesh);
+}
+
+/// Arrows on a grid: direction exact, length growing with strength up to
+/// most of a cell.
+fn arrows(
+    painter: &Painter,
+    view: &PlaneView,
+    area: &kinolab_world::Rect,
+    field: &Field,
+    color: Color32,
+) {
+    let nx = ARROW_COLUMNS;
+    let ny = ((nx as f64) * area.height() / area.width())
+        .round()
+        .clamp(3.0, 30.0) as usize;
+    let cell = view.length(area.width() / nx as f64);
+    let scale = field.scale() * 0.25;
+    for (p, f) in field.arrows(area, nx, ny) {
+        let m = f.norm();
+        if m < 1e-9 {
+            continue;
+        }
+        let len = cell * 0.8 * (1.0 - (-m / scale).exp()) as f32;
+        let dir = vec2(f.x as f32, -f.y as f32) / m as f32;
+        let at = view.to_screen(w(p)) - dir * len / 2.0;
+        arrow(painter, at, dir * len, 4.0, Stroke::new(1.0, color));
+    }
+}
+
+/// Streamlines from a grid of seeds, each followed downstream.
+fn streamlines(
+    painter: &Painter,
+    view: &PlaneView,
+    area: &kinolab_world::Rect,
+    field: &Field,
+    color: Color32,
+) {
+    let step = (area.width() + area.height()) / 300.0;
+    for j in 0..3 {
+        for i in 0..5 {
+            let mut p = Vec2::new(
+                area.x_min + (i as f64 + 0.25) * area.width() / 5.0,
+                area.y_min + (j as f64 + 0.5) * area.height() / 3.0,
+            );
+            let mut pts = vec![view.to_screen(w(p))];
+            for _ in 0..400 {
+                let f = field.vector(p);
+                if f.norm() < 1e-6 || !area.contains(p.x, p.y) {
+                    break;
+                }
+                p += f / f.norm() * step;
+                pts.push(view.to_screen(w(p)));
+            }
+            painter.add(egui::Shape::line(pts, Stroke::new(1.0, color)));
+        }
+    }
+}
