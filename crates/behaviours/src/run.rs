@@ -11,7 +11,10 @@ use crate::coordinate::{Coordinator, Decision, Memory, Responses, decide};
 use crate::{Drive, FieldError, Named, Response};
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a behaviour run file (an object with `world`, `behaviours` and `coordinator`)"
+)]
 struct RunFile {
     /// An example world's id, or a world file's contents.
     world: serde_json::Value,

@@ -3,13 +3,12 @@
 
 use std::path::Path;
 
-use kinolab_common::display::tidy_report;
 use kinolab_fields::Field;
 use kinolab_fields::descend::Steps;
 use kinolab_fields::report;
 use serde_json::Value;
 
-use crate::{Failure, numbers, point};
+use crate::{Failure, input, numbers, point, report as emit};
 
 /// A field file, or `catalogue:<id>` for one of the classic fields.
 fn load_field(path: &Path) -> Result<Field, Failure> {
@@ -19,8 +18,7 @@ fn load_field(path: &Path) -> Result<Field, Failure> {
             .ok_or_else(|| Failure(format!("{shown}: no field called `{id}` in the catalogue")))?;
         return preset.field().map_err(|e| Failure(format!("{shown}: {e}")));
     }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| Failure(format!("{shown}: cannot read: {e}")))?;
+    let text = input::read(path)?;
     Field::from_json(&text).map_err(|e| Failure(format!("{shown}: {e}")))
 }
 
@@ -51,9 +49,9 @@ pub(crate) fn field(path: &Path, q: &FieldQuery<'_>) -> Result<Value, Failure> {
             .filter(|p| !p.trim().is_empty())
             .map(|p| point("at", p))
             .collect::<Result<Vec<_>, _>>()?;
-        return report::vectors(&field, &points)
-            .map(|r| tidy_report(&r))
-            .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)));
+        let r = report::vectors(&field, &points)
+            .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)))?;
+        return emit("--at", &r);
     }
     if q.minima {
         let area = q
@@ -68,9 +66,9 @@ pub(crate) fn field(path: &Path, q: &FieldQuery<'_>) -> Result<Value, Failure> {
                 )));
             }
         };
-        return report::minima_in(&field, corners)
-            .map(|r| tidy_report(&r))
-            .map_err(|e| Failure(format!("--box: {}", e.message)));
+        let r = report::minima_in(&field, corners)
+            .map_err(|e| Failure(format!("--box: {}", e.message)))?;
+        return emit("--box", &r);
     }
     let start = point("descend", q.descend.unwrap_or_default())?;
     let defaults = Steps::default();
@@ -78,18 +76,16 @@ pub(crate) fn field(path: &Path, q: &FieldQuery<'_>) -> Result<Value, Failure> {
         step: q.step.unwrap_or(defaults.step),
         max_steps: q.max_steps.unwrap_or(defaults.max_steps),
     };
-    report::descent(&field, start, steps)
-        .map(|d| tidy_report(&d))
-        .map_err(|e| Failure(format!("--{}: {}", e.field.replace('_', "-"), e.message)))
+    let d = report::descent(&field, start, steps)
+        .map_err(|e| Failure(format!("--{}: {}", e.field.replace('_', "-"), e.message)))?;
+    emit("--descend", &d)
 }
 
 pub(crate) fn run(path: &Path) -> Result<Value, Failure> {
     let shown = path.display().to_string();
-    let text =
-        std::fs::read_to_string(path).map_err(|e| Failure(format!("{shown}: cannot read: {e}")))?;
+    let text = input::read(path)?;
     let setup = kinolab_behaviours::run::Setup::from_json(&text)
         .map_err(|e| Failure(format!("{shown}: {e}")))?;
-    kinolab_behaviours::run::run(&setup)
-        .map(|r| tidy_report(&r))
-        .map_err(|e| Failure(format!("{shown}: {e}")))
+    let r = kinolab_behaviours::run::run(&setup).map_err(|e| Failure(format!("{shown}: {e}")))?;
+    emit(&shown, &r)
 }

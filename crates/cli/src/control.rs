@@ -4,17 +4,15 @@
 
 use std::path::Path;
 
-use kinolab_common::display::tidy_report;
 use kinolab_control::file::{RunSpec, from_json};
 use kinolab_control::{Gains, report};
 use serde_json::Value;
 
-use crate::{Failure, numbers};
+use crate::{Failure, input, numbers, report as emit};
 
 fn load(path: &Path) -> Result<RunSpec, Failure> {
     let shown = path.display().to_string();
-    let text =
-        std::fs::read_to_string(path).map_err(|e| Failure(format!("{shown}: cannot read: {e}")))?;
+    let text = input::read(path)?;
     from_json(&text).map_err(|e| Failure(format!("{shown}: {e}")))
 }
 
@@ -24,7 +22,10 @@ pub(crate) fn simulate(path: &Path) -> Result<Value, Failure> {
         .run
         .simulate()
         .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    Ok(tidy_report(&report::simulation(&spec, &trajectory)))
+    emit(
+        &path.display().to_string(),
+        &report::simulation(&spec, &trajectory),
+    )
 }
 
 pub(crate) fn batch_run(
@@ -35,19 +36,23 @@ pub(crate) fn batch_run(
     paths: bool,
 ) -> Result<Value, Failure> {
     let spec = load(path)?;
-    report::circle_batch(&spec, radius, count, heading_deg, paths)
-        .map(|r| tidy_report(&r))
-        .map_err(|e| match e.field.as_str() {
-            "radius" | "count" | "heading" => Failure(format!("--{}: {}", e.field, e.message)),
-            _ => Failure(format!("{}: {e}", path.display())),
-        })
+    let batch =
+        report::circle_batch(&spec, radius, count, heading_deg, paths).map_err(|e| {
+            match e.field.as_str() {
+                "radius" | "count" | "heading" | "paths" => {
+                    Failure(format!("--{}: {}", e.field, e.message))
+                }
+                _ => Failure(format!("{}: {e}", path.display())),
+            }
+        })?;
+    emit(&path.display().to_string(), &batch)
 }
 
 pub(crate) fn gains(text: &str) -> Result<Value, Failure> {
     match numbers("gains", text)?.as_slice() {
         [r, a, b] => {
             let g = Gains::new(*r, *a, *b).map_err(|e| Failure(format!("gains: {e}")))?;
-            Ok(tidy_report(&report::stability(&g)))
+            emit("gains", &report::stability(&g))
         }
         other => Err(Failure(format!(
             "gains: expected three numbers K_RHO,K_ALPHA,K_BETA, got {}",

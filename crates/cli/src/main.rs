@@ -6,14 +6,15 @@
 
 mod behaviour;
 mod control;
+mod input;
 mod mechanism;
+mod output;
 mod wheels;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use kinolab_common::display::tidy_report;
 use serde_json::{Value, json};
 
 /// The Kinolab robotics lab's core, scriptable. Prints one JSON document per call.
@@ -74,10 +75,10 @@ enum Command {
         /// A run file; its own start is replaced by the circle's.
         run: PathBuf,
         /// Circle radius, m.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
         radius: f64,
         /// Number of starts.
-        #[arg(long, default_value_t = 16)]
+        #[arg(long, default_value_t = 16, allow_hyphen_values = true)]
         count: usize,
         /// Heading of every start, degrees.
         #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
@@ -96,8 +97,13 @@ enum Command {
     Fk {
         /// A model file (`*.model.json`), or `catalogue:<id>`.
         model: PathBuf,
-        /// Joint values, rad (revolute) or m (prismatic): Q1,...,QN
-        #[arg(long, value_name = "Q1,...,QN", allow_hyphen_values = true)]
+        /// Joint values, rad (revolute) or m (prismatic): Q1,...,QN (none for a model without joints)
+        #[arg(
+            long,
+            value_name = "Q1,...,QN",
+            allow_hyphen_values = true,
+            default_value = ""
+        )]
         q: String,
         /// A frame name: a joint's, `base`, `world` or `tool`.
         #[arg(long)]
@@ -162,7 +168,18 @@ enum Command {
 /// A failure reported as one line on stderr.
 struct Failure(String);
 
+/// A report as the JSON to print: finite numbers only (see
+/// [`kinolab_common::display::tidy_report`]); `context` names the file or
+/// option the report was computed from.
+fn report(context: &str, report: &impl serde::Serialize) -> Result<Value, Failure> {
+    kinolab_common::display::tidy_report(report).map_err(|e| Failure(format!("{context}: {e}")))
+}
+
+/// Comma-separated finite numbers; an empty text is no numbers.
 fn numbers(option: &str, text: &str) -> Result<Vec<f64>, Failure> {
+    if text.trim().is_empty() {
+        return Ok(Vec::new());
+    }
     text.split(',')
         .map(|part| match part.trim().parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
@@ -172,6 +189,17 @@ fn numbers(option: &str, text: &str) -> Result<Vec<f64>, Failure> {
             ))),
         })
         .collect()
+}
+
+/// One finite number.
+fn number(option: &str, text: &str) -> Result<f64, Failure> {
+    match numbers(option, text)?.as_slice() {
+        [x] => Ok(*x),
+        _ => Err(Failure(format!(
+            "--{option}: `{}` is not one finite number",
+            text.trim()
+        ))),
+    }
 }
 
 fn point(option: &str, text: &str) -> Result<[f64; 2], Failure> {
@@ -187,9 +215,9 @@ fn point(option: &str, text: &str) -> Result<[f64; 2], Failure> {
 fn run(command: Command) -> Result<Value, Failure> {
     match command {
         Command::LegEvents { legs } => {
-            let report = kinolab_locomotion::report::leg_events(legs)
+            let r = kinolab_locomotion::report::leg_events(legs)
                 .map_err(|e| Failure(format!("legs: {}", e.message)))?;
-            Ok(tidy_report(&report))
+            report("legs", &r)
         }
         Command::Stability { com, feet } => {
             let com = point("com", &com)?;
@@ -198,9 +226,9 @@ fn run(command: Command) -> Result<Value, Failure> {
                 .filter(|f| !f.trim().is_empty())
                 .map(|f| point("feet", f))
                 .collect::<Result<Vec<_>, _>>()?;
-            let report = kinolab_locomotion::report::stability(com, &feet)
+            let r = kinolab_locomotion::report::stability(com, &feet)
                 .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)))?;
-            Ok(tidy_report(&report))
+            report("stability", &r)
         }
         Command::Analyze { robot } => wheels::analyze(&robot),
         Command::Drive {
@@ -277,12 +305,15 @@ fn check_lessons(dir: Option<PathBuf>) -> Result<Value, Failure> {
         Ok(course)
     })
     .map_err(|e| Failure(e.to_string()))?;
-    Ok(json!({ "ok": true, "units": tidy_report(&course.summary()) }))
+    Ok(json!({ "ok": true, "units": report("lessons", &course.summary())? }))
 }
 
 /// Markdown and PNG files found in unit folders under `dir`: the Markdown
 /// with its text, and the images' paths, all relative to `dir`.
 type LessonFiles = (Vec<(String, String)>, Vec<String>);
+
+/// The most Markdown files `kinolab lessons` reads from a folder.
+const MAX_LESSON_FILES: usize = 1000;
 
 fn read_lesson_files(dir: &std::path::Path) -> Result<LessonFiles, Failure> {
     let mut out = Vec::new();
@@ -300,9 +331,13 @@ fn read_lesson_files(dir: &std::path::Path) -> Result<LessonFiles, Failure> {
         for file in read_dir(&path)?.flatten() {
             let name = file.file_name().to_string_lossy().into_owned();
             if name.ends_with(".md") {
-                let text = std::fs::read_to_string(file.path())
-                    .map_err(|e| Failure(format!("{}: cannot read: {e}", file.path().display())))?;
-                out.push((format!("{folder}/{name}"), text));
+                if out.len() >= MAX_LESSON_FILES {
+                    return Err(Failure(format!(
+                        "{}: more than {MAX_LESSON_FILES} lesson files",
+                        dir.display()
+                    )));
+                }
+                out.push((format!("{folder}/{name}"), input::read(&file.path())?));
             } else if name.ends_with(".png") {
                 images.push(format!("{folder}/{name}"));
             }
@@ -311,15 +346,30 @@ fn read_lesson_files(dir: &std::path::Path) -> Result<LessonFiles, Failure> {
     Ok((out, images))
 }
 
+/// Clap's complaint as one line: what is wrong and which option, without
+/// the usage block that follows it.
+fn usage_error(e: &clap::Error) -> String {
+    use clap::error::ErrorKind;
+    if matches!(
+        e.kind(),
+        ErrorKind::MissingSubcommand | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+    ) {
+        return "no command given; `kinolab --help` lists them".into();
+    }
+    let text = e.to_string();
+    let parts: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .take_while(|l| !l.starts_with("Usage:"))
+        .filter(|l| !l.is_empty() && !l.starts_with("For more information"))
+        .collect();
+    parts.join(" ").trim_start_matches("error: ").to_owned()
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
-        Err(e) if e.use_stderr() => {
-            let message = e.to_string();
-            let first = message.lines().next().unwrap_or("invalid arguments");
-            eprintln!("kinolab: {}", first.trim_start_matches("error: "));
-            return ExitCode::from(2);
-        }
+        Err(e) if e.use_stderr() => return output::fail(&usage_error(&e)),
         Err(e) => {
             // --help and --version go to stdout as clap formats them.
             let _ = e.print();
@@ -327,16 +377,7 @@ fn main() -> ExitCode {
         }
     };
     match run(cli.command) {
-        Ok(value) => {
-            #[allow(clippy::print_stdout)]
-            {
-                println!("{value}");
-            }
-            ExitCode::SUCCESS
-        }
-        Err(Failure(message)) => {
-            eprintln!("kinolab: {message}");
-            ExitCode::from(2)
-        }
+        Ok(value) => output::print(&value),
+        Err(Failure(message)) => output::fail(&message),
     }
 }

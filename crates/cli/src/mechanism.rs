@@ -3,11 +3,10 @@
 
 use std::path::Path;
 
-use kinolab_common::display::tidy_report;
 use kinolab_mechanism::{FieldError, Goal, Model, Options, Target, Vector3, report};
 use serde_json::Value;
 
-use crate::{Failure, numbers};
+use crate::{Failure, input, numbers, report as emit};
 
 fn load(path: &Path) -> Result<Model, Failure> {
     let shown = path.display().to_string();
@@ -15,22 +14,53 @@ fn load(path: &Path) -> Result<Model, Failure> {
         return kinolab_mechanism::catalogue::mechanism(id)
             .map_err(|e| Failure(format!("{shown}: {e}")));
     }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| Failure(format!("{shown}: cannot read: {e}")))?;
-    read_model(path, &text, 0).map_err(|e| Failure(format!("{shown}: {e}")))
+    let text = input::read(path)?;
+    let mut mounts = Mounts::default();
+    read_model(path, &text, 0, &mut mounts).map_err(|e| match mounts.exceeded {
+        // The bound is the news, not the chain of mounts that reached it.
+        Some(bound) => Failure(format!("{shown}: {bound}")),
+        None => Failure(format!("{shown}: {e}")),
+    })
+}
+
+/// The most model files one command reads through mounts, all levels
+/// together: a file that mounts the next several times, down many levels,
+/// would otherwise read exponentially many.
+const MAX_MOUNTED_FILES: usize = 64;
+/// The deepest chain of files mounting files.
+const MAX_MOUNT_DEPTH: usize = 16;
+
+/// Files read through mounts so far, and the bound hit, if one was.
+#[derive(Default)]
+struct Mounts {
+    read: usize,
+    exceeded: Option<String>,
 }
 
 /// Parse a model file whose mounted sub-mechanisms are files next to it.
-fn read_model(path: &Path, text: &str, depth: usize) -> Result<Model, FieldError> {
+fn read_model(
+    path: &Path,
+    text: &str,
+    depth: usize,
+    mounts: &mut Mounts,
+) -> Result<Model, FieldError> {
     let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
     kinolab_mechanism::file::from_json_with(text, &mut |name: &str| {
-        if depth >= 16 {
-            return Err(FieldError::new("", "mounts nested more than 16 deep"));
+        mounts.read += 1;
+        if depth >= MAX_MOUNT_DEPTH {
+            mounts.exceeded = Some(format!("mounts nested more than {MAX_MOUNT_DEPTH} deep"));
+        } else if mounts.read > MAX_MOUNTED_FILES {
+            mounts.exceeded = Some(format!(
+                "mounts read more than {MAX_MOUNTED_FILES} model files in all \
+                 (a file mounted several times, mounting others, multiplies them)"
+            ));
+        }
+        if let Some(bound) = &mounts.exceeded {
+            return Err(FieldError::new("", bound.clone()));
         }
         let sub = folder.join(name);
-        let text = std::fs::read_to_string(&sub)
-            .map_err(|e| FieldError::new("", format!("cannot read {}: {e}", sub.display())))?;
-        read_model(&sub, &text, depth + 1)
+        let text = input::read(&sub).map_err(|Failure(m)| FieldError::new("", m))?;
+        read_model(&sub, &text, depth + 1, mounts)
     })
 }
 
@@ -70,7 +100,7 @@ pub(crate) fn fk(path: &Path, q: &str, frame: Option<&str>) -> Result<Value, Fai
     let pose = model
         .pose(&q, &f)
         .map_err(|e| Failure(format!("--q: {e}")))?;
-    Ok(tidy_report(&report::forward(&name, &pose)))
+    emit(&path.display().to_string(), &report::forward(&name, &pose))
 }
 
 pub(crate) fn ik(
@@ -121,5 +151,5 @@ pub(crate) fn ik(
     let solution = model
         .solve(&[Goal::new(f, target)], &seed, &Options::default())
         .map_err(|e| Failure(format!("{}: {e}", path.display())))?;
-    Ok(tidy_report(&report::inverse(&solution)))
+    emit(&path.display().to_string(), &report::inverse(&solution))
 }

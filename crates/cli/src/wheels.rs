@@ -3,12 +3,11 @@
 
 use std::path::Path;
 
-use kinolab_common::display::tidy_report;
 use kinolab_wheels::catalogue::{CATALOGUE, robot};
 use kinolab_wheels::{Chassis, Vector3, report};
 use serde_json::{Value, json};
 
-use crate::{Failure, numbers};
+use crate::{Failure, input, number, numbers, report as emit};
 
 /// A robot file, or `catalogue:<id>` for a built-in robot.
 pub(crate) fn load(path: &Path) -> Result<Chassis, Failure> {
@@ -16,13 +15,12 @@ pub(crate) fn load(path: &Path) -> Result<Chassis, Failure> {
     if let Some(id) = shown.strip_prefix("catalogue:") {
         return robot(id).map_err(|e| Failure(format!("{shown}: {e}")));
     }
-    let text =
-        std::fs::read_to_string(path).map_err(|e| Failure(format!("{shown}: cannot read: {e}")))?;
+    let text = input::read(path)?;
     Chassis::from_json(&text).map_err(|e| Failure(format!("{shown}: {e}")))
 }
 
 pub(crate) fn analyze(path: &Path) -> Result<Value, Failure> {
-    Ok(tidy_report(&report::analysis(&load(path)?)))
+    emit(&path.display().to_string(), &report::analysis(&load(path)?))
 }
 
 pub(crate) fn drive(
@@ -57,16 +55,17 @@ pub(crate) fn drive(
                     )));
                 }
             };
-            report::inverse(&chassis, v, theta)
-                .map(|r| tidy_report(&r))
-                .map_err(option)
+            emit(
+                "--twist",
+                &report::inverse(&chassis, v, theta).map_err(option)?,
+            )
         }
         (None, Some(text)) => {
             let spins: Vec<Option<f64>> = text
                 .split(',')
                 .map(|part| match part.trim() {
                     "-" => Ok(None),
-                    other => numbers("wheels", other).map(|v| Some(v[0])),
+                    other => number("wheels", other).map(Some),
                 })
                 .collect::<Result<_, _>>()?;
             if spins.len() != chassis.wheels().len() {
@@ -77,9 +76,10 @@ pub(crate) fn drive(
                     spins.len()
                 )));
             }
-            report::forward(&chassis, &spins, theta)
-                .map(|r| tidy_report(&r))
-                .map_err(option)
+            emit(
+                "--wheels",
+                &report::forward(&chassis, &spins, theta).map_err(option)?,
+            )
         }
         (Some(_), Some(_)) => Err(Failure(
             "drive: give either --twist (inverse kinematics) or --wheels (forward), not both"
@@ -95,7 +95,7 @@ pub(crate) fn drive(
 /// The catalogue, or one robot's file.
 pub(crate) fn robots(id: Option<&str>) -> Result<Value, Failure> {
     match id {
-        None => Ok(json!({ "robots": tidy_report(&CATALOGUE) })),
+        None => Ok(json!({ "robots": emit("robots", &CATALOGUE)? })),
         Some(id) => {
             let chassis = robot(id).map_err(|e| Failure(e.to_string()))?;
             serde_json::from_str(&chassis.to_json()).map_err(|e| Failure(format!("{id}: {e}")))

@@ -43,8 +43,21 @@ pub fn tidy_json(value: serde_json::Value) -> serde_json::Value {
 
 /// A report as JSON with rounding noise removed: what the command line
 /// prints and the JavaScript API returns, so both give the same numbers.
-pub fn tidy_report(report: &impl serde::Serialize) -> serde_json::Value {
-    tidy_json(serde_json::to_value(report).unwrap_or(serde_json::Value::Null))
+/// A number that is not finite (JSON would print it as `null`) is an error
+/// naming where it is: an answer that overflowed is never shown as one.
+pub fn tidy_report(report: &impl serde::Serialize) -> Result<serde_json::Value, crate::FieldError> {
+    if let Some(path) = crate::finite::first_non_finite(report) {
+        return Err(crate::FieldError::new(
+            "",
+            format!(
+                "the result's `{path}` is not a finite number: the computation overflowed; \
+                 try smaller values"
+            ),
+        ));
+    }
+    serde_json::to_value(report)
+        .map(tidy_json)
+        .map_err(|e| crate::FieldError::new("", format!("the result cannot be written: {e}")))
 }
 
 /// Digits in groups of three with thin spaces: 39 916 800.

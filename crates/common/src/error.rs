@@ -62,15 +62,36 @@ impl fmt::Display for FieldError {
 
 impl std::error::Error for FieldError {}
 
-/// `value` if it is a finite number, else an error naming `field`.
-pub fn finite(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
-    if value.is_finite() {
-        Ok(value)
+/// A number in a message: plain when of everyday size, in exponent form
+/// when very small or very large (`5e-324`, not 324 digits; `1e6`).
+pub fn shown(value: f64) -> String {
+    let size = value.abs();
+    if size != 0.0 && size.is_finite() && !(1e-4..1e6).contains(&size) {
+        format!("{value:e}")
     } else {
+        format!("{value}")
+    }
+}
+
+/// `value` if it is a number the lab can compute with: finite, and no
+/// larger than [`MAGNITUDE_LIMIT`] (whose squares and products stay
+/// finite), else an error naming `field`. Every number read from a file,
+/// an option or the JavaScript API passes through here or a stricter check.
+pub fn finite(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
+    if !value.is_finite() {
         Err(FieldError::new(
             field,
-            format!("must be a finite number, got {value}"),
+            format!("must be a finite number, got {}", shown(value)),
         ))
+    } else if value.abs() > MAGNITUDE_LIMIT {
+        Err(outside(
+            field.into(),
+            value,
+            (-MAGNITUDE_LIMIT, MAGNITUDE_LIMIT),
+            "",
+        ))
+    } else {
+        Ok(value)
     }
 }
 
@@ -82,7 +103,7 @@ pub fn positive(field: impl Into<String>, value: f64) -> Result<f64, FieldError>
     } else {
         Err(FieldError::new(
             field,
-            format!("must be greater than 0, got {value}"),
+            format!("must be greater than 0, got {}", shown(value)),
         ))
     }
 }
@@ -95,7 +116,7 @@ pub fn non_negative(field: impl Into<String>, value: f64) -> Result<f64, FieldEr
     } else {
         Err(FieldError::new(
             field,
-            format!("must not be negative, got {value}"),
+            format!("must not be negative, got {}", shown(value)),
         ))
     }
 }
@@ -106,10 +127,91 @@ pub fn in_range(field: impl Into<String>, value: f64, lo: f64, hi: f64) -> Resul
     if (lo..=hi).contains(&finite(field.as_str(), value)?) {
         Ok(value)
     } else {
-        Err(FieldError::new(
-            field,
-            format!("must be from {lo} to {hi}, got {value}"),
-        ))
+        Err(outside(field, value, (lo, hi), ""))
+    }
+}
+
+/// "must be from `lo` to `hi`" (in `unit`), for `value` outside them.
+fn outside(field: String, value: f64, (lo, hi): (f64, f64), unit: &str) -> FieldError {
+    FieldError::new(
+        field,
+        format!(
+            "must be from {}{unit} to {}{unit}, got {}",
+            shown(lo),
+            shown(hi),
+            shown(value)
+        ),
+    )
+}
+
+/// The smallest and largest physical length the lab accepts, m: a micrometre
+/// to a thousand kilometres. Outside this range products of lengths
+/// overflow or vanish long before any robot is modelled.
+pub const LENGTH_RANGE: (f64, f64) = (1e-6, 1e6);
+
+/// `value` if it is a length the lab can compute with (within
+/// [`LENGTH_RANGE`]), else an error naming `field`.
+pub fn length(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
+    let field = field.into();
+    let (lo, hi) = LENGTH_RANGE;
+    if (lo..=hi).contains(&positive(field.as_str(), value)?) {
+        Ok(value)
+    } else {
+        Err(outside(field, value, LENGTH_RANGE, " m"))
+    }
+}
+
+/// `value` if it is finite and at most `limit` in size, else an error
+/// naming `field` (for speeds, gains and coordinates, whose products must
+/// not overflow).
+pub fn bounded(field: impl Into<String>, value: f64, limit: f64) -> Result<f64, FieldError> {
+    in_range(field, value, -limit, limit)
+}
+
+/// The largest speed, spin, gain, coordinate or angle (in its unit) the lab
+/// accepts: a million is beyond any robot, and far enough from overflow
+/// that squares and products of such numbers stay finite.
+pub const MAGNITUDE_LIMIT: f64 = 1e6;
+
+/// Longest unbroken piece of a message (a quoted value, a key, a path),
+/// in characters; longer ones are cut to [`WORD_KEPT`].
+const WORD_LIMIT: usize = 80;
+const WORD_KEPT: usize = 48;
+/// Longest message, in characters.
+const MESSAGE_LIMIT: usize = 400;
+
+/// A message as one printable line: control characters escaped (a newline
+/// in a file name or a key shows as `\\n`), any unbroken piece longer
+/// than [`WORD_LIMIT`] cut (a 10 MB string from the input is not repeated
+/// back), and the whole cut to [`MESSAGE_LIMIT`] characters. Every error
+/// the command line prints and the JavaScript API throws goes through here.
+pub fn one_line(message: &str) -> String {
+    let words: Vec<String> = message
+        .split(' ')
+        .map(|word| {
+            let mut kept: String = word.chars().take(WORD_LIMIT + 1).collect();
+            if kept.chars().count() > WORD_LIMIT {
+                kept = word.chars().take(WORD_KEPT).collect();
+                kept.push('…');
+            }
+            let mut printable = String::new();
+            for c in kept.chars() {
+                if c.is_control() {
+                    printable.extend(c.escape_default());
+                } else {
+                    printable.push(c);
+                }
+            }
+            printable
+        })
+        .collect();
+    let line = words.join(" ");
+    if line.chars().count() > MESSAGE_LIMIT {
+        let mut cut: String = line.chars().take(MESSAGE_LIMIT).collect();
+        cut.push('…');
+        cut
+    } else {
+        line
     }
 }
 
@@ -119,10 +221,62 @@ pub fn in_range(field: impl Into<String>, value: f64, lo: f64, hi: f64) -> Resul
 pub fn from_json<T: DeserializeOwned>(text: &str) -> Result<T, FieldError> {
     let de = &mut serde_json::Deserializer::from_str(text);
     serde_path_to_error::deserialize(de).map_err(|e| {
-        let path = e.path().to_string();
-        let field = if path == "." { String::new() } else { path };
-        FieldError::new(field, e.into_inner().to_string())
+        let field = readable_path(&e.path().to_string());
+        FieldError::new(field, plain_types(&e.into_inner().to_string()))
     })
+}
+
+/// serde's type names in words a file's author knows: "expected struct
+/// WheelEntry" becomes "expected an object", "expected f64" "expected a
+/// number".
+fn plain_types(message: &str) -> String {
+    const NAMED: [(&str, &str); 3] = [
+        (
+            "expected internally tagged enum ",
+            "expected an object with a `kind`",
+        ),
+        ("expected struct ", "expected an object"),
+        (
+            "expected enum ",
+            "expected one of the names this field takes",
+        ),
+    ];
+    const PRIMITIVE: [(&str, &str); 6] = [
+        ("expected f64", "expected a number"),
+        ("expected usize", "expected a whole number, 0 or more"),
+        ("expected u64", "expected a whole number, 0 or more"),
+        ("expected u32", "expected a whole number, 0 or more"),
+        ("expected a sequence", "expected a list"),
+        ("expected a map", "expected an object"),
+    ];
+    let mut out = message.to_owned();
+    for (serde, plain) in NAMED {
+        if let Some(i) = out.find(serde) {
+            let rest = &out[i + serde.len()..];
+            let name_end = rest
+                .find(|c: char| !c.is_alphanumeric() && c != '_')
+                .unwrap_or(rest.len());
+            out = format!("{}{plain}{}", &out[..i], &rest[name_end..]);
+        }
+    }
+    for (serde, plain) in PRIMITIVE {
+        out = out.replace(serde, plain);
+    }
+    out
+}
+
+/// A JSON path as a person reads it: no `.` for the whole document and no
+/// `?` where the path could not be followed (inside an untagged value).
+fn readable_path(path: &str) -> String {
+    let mut out = String::new();
+    for part in path.split('.').filter(|p| !p.is_empty() && *p != "?") {
+        let part = part.trim_end_matches("[?]");
+        if !out.is_empty() && !part.starts_with('[') {
+            out.push('.');
+        }
+        out.push_str(part);
+    }
+    out
 }
 
 #[cfg(test)]
@@ -152,6 +306,58 @@ mod tests {
         assert!(e.message.contains("line 2"), "{e}");
         let e = from_json::<Robot>(r#"{"wheel": []}"#).unwrap_err();
         assert!(e.to_string().contains("unknown field `wheel`"), "{e}");
+    }
+
+    #[test]
+    fn messages_are_one_short_line() {
+        assert_eq!(one_line("a\nb\tc"), "a\\nb\\tc");
+        let long = format!("unknown variant `{}`, expected `fixed`", "x".repeat(10_000));
+        let line = one_line(&long);
+        assert!(line.chars().count() < 90, "{line}");
+        assert!(line.ends_with("… expected `fixed`"), "{line}");
+        assert!(one_line("a `key\nwith a newline`").ends_with("`key\\nwith a newline`"));
+        assert!(one_line(&"y".repeat(5000)).chars().count() <= 401);
+        assert_eq!(readable_path("."), "");
+        assert_eq!(readable_path("wheels[0].?.kind"), "wheels[0].kind");
+        assert_eq!(readable_path("?.x"), "x");
+    }
+
+    #[test]
+    fn serde_types_are_named_in_plain_words() {
+        assert_eq!(
+            plain_types(
+                "invalid type: floating point `-2.1`, expected struct WheelEntry at line 1"
+            ),
+            "invalid type: floating point `-2.1`, expected an object at line 1"
+        );
+        assert_eq!(
+            plain_types("invalid type: string \"x\", expected internally tagged enum Controller"),
+            "invalid type: string \"x\", expected an object with a `kind`"
+        );
+        assert_eq!(
+            plain_types("invalid type: map, expected f64 at line 2"),
+            "invalid type: map, expected a number at line 2"
+        );
+    }
+
+    #[test]
+    fn lengths_are_physical() {
+        assert_eq!(length("radius", 0.1), Ok(0.1));
+        assert!(
+            length("radius", 5e-324)
+                .unwrap_err()
+                .message
+                .contains("from 1e-6 m")
+        );
+        assert!(length("radius", 1e300).is_err());
+        assert!(length("radius", -1.0).is_err());
+        assert_eq!(bounded("vx", -2.0, 10.0), Ok(-2.0));
+        assert!(
+            bounded("vx", 1e160, 1e6)
+                .unwrap_err()
+                .to_string()
+                .starts_with("vx: must be from")
+        );
     }
 
     #[test]
@@ -186,6 +392,11 @@ mod tests {
         assert_eq!(
             in_range("slip", 1.0, 0.0, 0.9).unwrap_err().message,
             "must be from 0 to 0.9, got 1"
+        );
+        assert_eq!(finite("x", 5e-324).map_err(|e| e.message), Ok(5e-324));
+        assert_eq!(
+            finite("x", -2e6).unwrap_err().message,
+            "must be from -1e6 to 1e6, got -2e6"
         );
     }
 }

@@ -3,7 +3,9 @@
 //! - [`angle`]: wrapping angles into (−π, π], degrees, snapping;
 //! - [`display`]: numbers for people, never "−0.00";
 //! - [`random`]: one seeded generator, as a stream and as a hash;
-//! - [`error`]: [`FieldError`], bad input named by its path in the file;
+//! - [`error`]: [`FieldError`], bad input named by its path in the file,
+//!   and every message kept to one printable line;
+//! - [`finite`]: the first NaN or infinity in a report, by its path;
 //! - [`feedback`]: [`Feedback`], what a graded exercise says back;
 //! - [`geometry`]: a pose in the plane and an axis-aligned rectangle.
 //!
@@ -13,6 +15,7 @@ pub mod angle;
 pub mod display;
 pub mod error;
 pub mod feedback;
+pub mod finite;
 pub mod geometry;
 pub mod random;
 

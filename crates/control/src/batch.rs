@@ -26,6 +26,10 @@ pub fn preview(run: &Run) -> Run {
 
 /// Most starts one batch may have.
 pub const MAX_STARTS: usize = 1000;
+/// Most integration steps one batch may take, all starts together.
+pub const MAX_BATCH_STEPS: usize = 20_000_000;
+/// Most samples one batch may keep, all starts together.
+pub const MAX_BATCH_SAMPLES: usize = 1_000_000;
 
 /// `count` start poses evenly spaced on a circle of `radius` around the
 /// goal, all with world heading `heading` (the first on the goal's left,
@@ -37,6 +41,7 @@ pub fn circle_starts(
     heading: f64,
 ) -> Result<Vec<Pose>, FieldError> {
     positive("radius", radius)?;
+    crate::error::finite("radius", radius)?;
     crate::error::finite("heading", heading)?;
     if count == 0 || count > MAX_STARTS {
         return Err(FieldError::new(
@@ -65,6 +70,7 @@ pub struct Outcome {
     pub final_position_error: f64,
     pub path_length: f64,
     pub backward: bool,
+    pub diverged: bool,
 }
 
 impl From<(&Pose, &Trajectory)> for Outcome {
@@ -77,6 +83,7 @@ impl From<(&Pose, &Trajectory)> for Outcome {
             final_position_error: t.final_position_error,
             path_length: t.path_length,
             backward: t.backward,
+            diverged: t.diverged.is_some(),
         }
     }
 }
@@ -87,6 +94,28 @@ pub fn batch(run: &Run, starts: &[Pose]) -> Result<Vec<Trajectory>, FieldError> 
         return Err(FieldError::new(
             "starts",
             format!("at most {MAX_STARTS} starts, got {}", starts.len()),
+        ));
+    }
+    let steps = run.check()?.saturating_mul(starts.len());
+    if steps > MAX_BATCH_STEPS {
+        return Err(FieldError::new(
+            "count",
+            format!(
+                "{} starts × {} steps is {steps} steps; at most {MAX_BATCH_STEPS} in one batch \
+                 (fewer starts, a larger dt or a shorter run)",
+                starts.len(),
+                steps / starts.len().max(1)
+            ),
+        ));
+    }
+    let samples = steps / run.output_every;
+    if samples > MAX_BATCH_SAMPLES {
+        return Err(FieldError::new(
+            "count",
+            format!(
+                "the batch would keep {samples} samples; at most {MAX_BATCH_SAMPLES} \
+                 (fewer starts, or a larger output_every)"
+            ),
         ));
     }
     let mut one = run.clone();

@@ -98,7 +98,10 @@ struct ToleranceFile {
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a run file (an object with `controller` and `start`)"
+)]
 struct RunFile {
     controller: ControllerFile,
     start: PoseFile,
@@ -154,6 +157,8 @@ fn robot(value: Option<&serde_json::Value>) -> Result<Chassis, FieldError> {
     match value {
         None => kinolab_wheels::catalogue::robot("differential-drive").map_err(wheels_error),
         Some(serde_json::Value::String(id)) => {
+            // `catalogue:<id>` as on the command line, or the bare id.
+            let id = id.strip_prefix("catalogue:").unwrap_or(id);
             kinolab_wheels::catalogue::robot(id).map_err(|e| FieldError::new("robot", e.message))
         }
         Some(object @ serde_json::Value::Object(_)) => {
@@ -168,19 +173,7 @@ fn robot(value: Option<&serde_json::Value>) -> Result<Chassis, FieldError> {
 
 /// Parse a run file. Errors name the JSON path of the bad field.
 pub fn from_json(text: &str) -> Result<RunSpec, FieldError> {
-    let mut de = serde_json::Deserializer::from_str(text);
-    let file: RunFile = serde_path_to_error::deserialize(&mut de).map_err(|e| {
-        let path = e.path().to_string();
-        let inner = e.into_inner();
-        let message = inner.to_string();
-        // serde_json appends " at line L column C"; keep the message clean.
-        let message = message
-            .split(" at line ")
-            .next()
-            .unwrap_or(&message)
-            .to_string();
-        FieldError::new(if path == "." { String::new() } else { path }, message)
-    })?;
+    let file: RunFile = kinolab_common::error::from_json(text)?;
     from_file(&file)
 }
 
@@ -211,6 +204,7 @@ fn from_file(file: &RunFile) -> Result<RunSpec, FieldError> {
             run
         }
         ControllerFile::OpenLoop { segments, limits } => {
+            check_degrees(segments, limits.as_ref())?;
             let segments: Vec<Segment> = segments.iter().map(Segment::from).collect();
             let limits = limits.as_ref().map_or_else(Limits::default, |l| Limits {
                 max_speed: l.max_speed,
@@ -222,7 +216,7 @@ fn from_file(file: &RunFile) -> Result<RunSpec, FieldError> {
                 let field = if e.field.starts_with("start") {
                     e.field
                 } else {
-                    format!("controller.{}", e.field)
+                    format!("controller.{}", in_degrees(&e.field))
                 };
                 FieldError::new(field, e.message)
             })?;
@@ -252,6 +246,31 @@ fn from_file(file: &RunFile) -> Result<RunSpec, FieldError> {
         };
     }
     Ok(RunSpec { run, robot })
+}
+
+/// The plan's angles checked in degrees, as the file gives them, so a
+/// message repeats the number the author wrote.
+fn check_degrees(segments: &[SegmentFile], limits: Option<&LimitsFile>) -> Result<(), FieldError> {
+    for (i, s) in segments.iter().enumerate() {
+        if let SegmentFile::Arc { angle_deg, .. } | SegmentFile::Turn { angle_deg } = s {
+            crate::error::finite(format!("controller.segments[{i}].angle_deg"), *angle_deg)?;
+        }
+    }
+    if let Some(l) = limits {
+        crate::error::positive("controller.limits.max_turn_rate_deg", l.max_turn_rate_deg)?;
+        crate::error::positive("controller.limits.max_turn_accel_deg", l.max_turn_accel_deg)?;
+    }
+    Ok(())
+}
+
+/// A plan's field named as the file spells it: its angles are in degrees.
+fn in_degrees(field: &str) -> String {
+    for name in ["angle", "max_turn_rate", "max_turn_accel"] {
+        if field.ends_with(&format!(".{name}")) {
+            return format!("{field}_deg");
+        }
+    }
+    field.to_owned()
 }
 
 #[cfg(test)]

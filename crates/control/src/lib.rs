@@ -31,4 +31,7 @@ pub use noise::{NOISE_INTERVAL, Noise};
 pub use plan::{Limits, MAX_SEGMENTS, Plan, Profile, Scheduled, Segment};
 pub use polar::{Condition, Direction, Gains, Polar, Stability, TEXTBOOK_GAINS};
 pub use pose::Pose;
-pub use sim::{DriveModel, Driver, MAX_SAMPLES, MAX_STEPS, Run, Sample, Tolerance, Trajectory};
+pub use sim::{
+    Divergence, DriveModel, Driver, MAX_SAMPLES, MAX_STEPS, RUNAWAY_DISTANCE, Run, Sample,
+    Tolerance, Trajectory,
+};

@@ -35,17 +35,9 @@ impl Noise {
                 format!("must be from 0 to 0.9, got {}", self.slip),
             ));
         }
-        for (field, v) in [
-            ("noise.push_speed", self.push_speed),
-            ("noise.push_turn", self.push_turn),
-        ] {
-            if finite(field, v)? < 0.0 {
-                return Err(FieldError::new(
-                    field,
-                    format!("must not be negative, got {v}"),
-                ));
-            }
-        }
+        // Named as run files spell them: the turn push in degrees.
+        kinolab_common::error::non_negative("noise.push_speed", self.push_speed)?;
+        kinolab_common::error::non_negative("noise.push_turn_deg", self.push_turn.to_degrees())?;
         Ok(())
     }
 

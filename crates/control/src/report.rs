@@ -90,6 +90,11 @@ pub struct SimulationReport {
     pub robot: String,
     pub driven_wheels: Vec<usize>,
     pub direction: &'static str,
+    /// True when the run was stopped because it ran away.
+    pub diverged: bool,
+    /// Why it was stopped (only when it diverged).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stability: Option<StabilityReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -212,6 +217,8 @@ pub fn simulation(spec: &RunSpec, t: &Trajectory) -> SimulationReport {
         robot: spec.robot.name().to_owned(),
         driven_wheels: run.drive.driven.clone(),
         direction: direction(t.backward),
+        diverged: t.diverged.is_some(),
+        reason: t.diverged.as_ref().map(|d| d.reason.clone()),
         stability,
         plan,
     }
@@ -241,6 +248,8 @@ pub struct RunReport {
     pub final_position_error: f64,
     pub path_length: f64,
     pub direction: &'static str,
+    /// True when this run was stopped because it ran away.
+    pub diverged: bool,
     /// The sampled path, when asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub path: Option<Vec<[f64; 2]>>,
@@ -249,6 +258,8 @@ pub struct RunReport {
 /// `run` from `count` starts on a circle of `radius` around its goal, all
 /// with heading `heading_deg`: the [`batch`] report, with each run's path
 /// when `paths`. Errors name the argument (`radius`, `count`, `heading`).
+/// Bounded like every command: at most [`crate::batch::MAX_BATCH_STEPS`]
+/// steps and [`crate::batch::MAX_BATCH_SAMPLES`] samples in all.
 pub fn circle_batch(
     spec: &RunSpec,
     radius: f64,
@@ -276,6 +287,7 @@ pub fn batch(outcomes: &[Outcome], paths: Option<&[Trajectory]>) -> BatchReport 
             final_position_error: o.final_position_error,
             path_length: o.path_length,
             direction: direction(o.backward),
+            diverged: o.diverged,
             path: paths
                 .and_then(|p| p.get(i))
                 .map(|t| t.samples.iter().map(|s| [s.pose.x, s.pose.y]).collect()),

@@ -197,6 +197,41 @@ pub struct Trajectory {
     pub peak_wheel_speed: f64,
     /// Whether the controller drove rear first.
     pub backward: bool,
+    /// Set when the run was stopped because its state ran away.
+    pub diverged: Option<Divergence>,
+}
+
+/// A run stopped early because it ran away: unstable gains, or a time step
+/// too coarse for them.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Divergence {
+    /// When it was stopped, s.
+    pub t: f64,
+    /// Why, in words.
+    pub reason: String,
+}
+
+/// Farther than this from the goal, m, a run has run away.
+pub const RUNAWAY_DISTANCE: f64 = 1e6;
+
+/// Why the step from `t` to state `next` (wheels at `wheel_speed`) means
+/// the run has run away, if it does.
+fn runaway(next: &[f64; 3], wheel_speed: f64, t: f64) -> Option<Divergence> {
+    let distance = next[0].hypot(next[1]);
+    let what = if !(next.iter().all(|v| v.is_finite()) && wheel_speed.is_finite()) {
+        "the state stopped being a finite number".to_owned()
+    } else if distance > RUNAWAY_DISTANCE {
+        format!("the robot was {distance:.3e} m from the goal")
+    } else {
+        return None;
+    };
+    Some(Divergence {
+        t,
+        reason: format!(
+            "diverged after {t:.3} s: {what}; the loop is unstable with these gains, \
+             or dt is too large for them"
+        ),
+    })
 }
 
 impl Run {
@@ -233,11 +268,13 @@ impl Run {
         })
     }
 
-    fn check(&self) -> Result<usize, FieldError> {
+    /// Check the run; its number of steps.
+    pub(crate) fn check(&self) -> Result<usize, FieldError> {
         for (field, pose) in [("start", &self.start), ("goal", &self.goal)] {
-            for (name, v) in [("x", pose.x), ("y", pose.y), ("theta", pose.theta)] {
-                finite(format!("{field}.{name}"), v)?;
-            }
+            let named = |name: &str| format!("{field}.{name}");
+            finite(named("x"), pose.x)?;
+            finite(named("y"), pose.y)?;
+            finite(named("theta_deg"), pose.theta.to_degrees())?;
         }
         positive("dt", self.dt)?;
         positive("duration", self.duration)?;
@@ -318,6 +355,7 @@ impl Run {
         let mut path_length = 0.0;
         let mut peak_wheel_speed: f64 = 0.0;
         let mut noise_interval = u64::MAX;
+        let mut diverged = None;
         for k in 0..=steps {
             let t = (k as f64 * self.dt).min(self.duration);
             // Reached means arrived and stayed: the time it last entered
@@ -363,6 +401,10 @@ impl Run {
             let h = (self.duration - t).min(self.dt);
             // The command at the step's start is the first stage's: reuse it.
             let next = system.rk4(&s, t, h, (v, omega));
+            diverged = runaway(&next, wheel_speed, t + h);
+            if diverged.is_some() {
+                break;
+            }
             let (dx, dy) = (next[0] - s[0], next[1] - s[1]);
             path_length += (dx * dx + dy * dy).sqrt();
             s = [next[0], next[1], wrap_near(next[2])];
@@ -378,6 +420,7 @@ impl Run {
             path_length,
             peak_wheel_speed,
             backward,
+            diverged,
         })
     }
 

@@ -7,7 +7,10 @@ use crate::primitive::{Primitive, Profile, Sense, Source, Spin};
 use crate::{Field, FieldError, Vec2};
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a field file (an object with `fields`)"
+)]
 struct FieldFile {
     #[serde(default)]
     name: String,

@@ -14,7 +14,7 @@ use serde_json::Value;
 pub type Reply = Result<Value, String>;
 
 pub(crate) fn reply(report: &impl Serialize) -> Reply {
-    Ok(tidy_report(report))
+    tidy_report(report).map_err(text)
 }
 
 pub(crate) fn text(e: FieldError) -> String {

@@ -31,12 +31,17 @@ use wasm_bindgen::prelude::*;
 
 use api::Reply;
 
+/// An error to throw: the command line's one-line message.
+fn thrown(message: &str) -> JsError {
+    JsError::new(&kinolab_common::error::one_line(message))
+}
+
 /// A reply as a JavaScript value (plain objects, `null` for none).
 fn to_js(reply: Reply) -> Result<JsValue, JsError> {
-    let value = reply.map_err(|e| JsError::new(&e))?;
+    let value = reply.map_err(|e| thrown(&e))?;
     value
         .serialize(&serde_wasm_bindgen::Serializer::json_compatible())
-        .map_err(|e| JsError::new(&format!("result: {e}")))
+        .map_err(|e| thrown(&format!("result: {e}")))
 }
 
 /// A JavaScript argument as JSON, naming the argument if it cannot be.
@@ -44,12 +49,12 @@ fn from_js(name: &str, value: JsValue) -> Result<Value, JsError> {
     if value.is_undefined() {
         return Ok(Value::Null);
     }
-    serde_wasm_bindgen::from_value(value).map_err(|e| JsError::new(&format!("{name}: {e}")))
+    serde_wasm_bindgen::from_value(value).map_err(|e| thrown(&format!("{name}: {e}")))
 }
 
 /// A typed JavaScript argument.
 fn typed<T: serde::de::DeserializeOwned>(name: &str, value: JsValue) -> Result<T, JsError> {
-    api::arg(name, from_js(name, value)?).map_err(|e| JsError::new(&e))
+    api::arg(name, from_js(name, value)?).map_err(|e| thrown(&e))
 }
 
 /// The package version.
@@ -61,7 +66,7 @@ pub fn version() -> String {
 /// N = (2k − 1)!, as a decimal string (it outgrows JavaScript numbers).
 #[wasm_bindgen(js_name = legEvents)]
 pub fn leg_events(legs: u32) -> Result<String, JsError> {
-    let report = api::leg_events(legs).map_err(|e| JsError::new(&e))?;
+    let report = api::leg_events(legs).map_err(|e| thrown(&e))?;
     Ok(report["events"].as_str().unwrap_or_default().to_owned())
 }
 

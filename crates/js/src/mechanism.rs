@@ -33,7 +33,7 @@ impl Mechanism {
     /// `catalogue:<id>` (or just the id), or a model file as JSON text or
     /// as an object. Mounts may name catalogue mechanisms.
     pub fn load(source: JsValue) -> Result<Mechanism, JsError> {
-        let inner = MechanismApi::load(from_js("model", source)?).map_err(|e| JsError::new(&e))?;
+        let inner = MechanismApi::load(from_js("model", source)?).map_err(|e| crate::thrown(&e))?;
         Ok(Mechanism { inner })
     }
 
@@ -46,7 +46,7 @@ impl Mechanism {
     /// The zero state with couplings applied and loops closed.
     #[wasm_bindgen(js_name = homeState)]
     pub fn home_state(&self) -> Result<Vec<f64>, JsError> {
-        self.inner.home_state().map_err(|e| JsError::new(&e))
+        self.inner.home_state().map_err(|e| crate::thrown(&e))
     }
 
     /// `{ frame, matrix }` as `kinolab fk` prints it; followers are set from

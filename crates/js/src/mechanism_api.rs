@@ -16,7 +16,7 @@ fn text(e: FieldError) -> String {
 }
 
 fn reply(report: &impl serde::Serialize) -> Reply {
-    Ok(kinolab_common::display::tidy_report(report))
+    kinolab_common::display::tidy_report(report).map_err(|e| e.to_string())
 }
 
 /// The built-in mechanisms: `[{ id, name, summary }]`.

@@ -61,8 +61,14 @@ fn parse_body(file: &str, body: &str, first_line: usize) -> Result<Vec<Block>, L
         first_line,
         display_math: false,
     };
+    parser.check_nesting()?;
     parser.blocks()
 }
+
+/// The deepest nesting of quotes, lists and emphasis a lesson may use: far
+/// more than any text needs, and shallow enough that reading, checking and
+/// drawing the blocks (which recurse) never exhaust the stack.
+pub const MAX_NESTING: usize = 16;
 
 struct BodyParser<'f, 'src> {
     file: &'f str,
@@ -223,6 +229,25 @@ impl<'src> BodyParser<'_, 'src> {
         let block = self.body.get(range.clone()).unwrap_or("").trim_end();
         let last_line = block.rsplit('\n').next().unwrap_or("").trim();
         block.contains('\n') && (last_line.starts_with("```") || last_line.starts_with("~~~"))
+    }
+
+    /// Refuse Markdown nested deeper than [`MAX_NESTING`], naming the line.
+    fn check_nesting(&self) -> Result<(), LessonError> {
+        let mut depth = 0usize;
+        for (event, range) in &self.events {
+            match event {
+                Event::Start(_) => depth += 1,
+                Event::End(_) => depth = depth.saturating_sub(1),
+                _ => {}
+            }
+            if depth > MAX_NESTING {
+                return Err(self.error(
+                    range.start,
+                    format!("quotes, lists or emphasis nested more than {MAX_NESTING} deep"),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// Consume events up to the `End` that closes an already opened

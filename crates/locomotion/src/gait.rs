@@ -18,7 +18,9 @@ pub fn leg_events(legs: u32) -> Result<u128, FieldError> {
     if legs > MAX_LEGS_EXACT {
         return Err(FieldError::new(
             "legs",
-            format!("at most {MAX_LEGS_EXACT} legs for an exact count; use leg_events_f64"),
+            format!(
+                "at most {MAX_LEGS_EXACT} legs for an exact count (more overflow 64-bit integers)"
+            ),
         ));
     }
     Ok((1..=u128::from(2 * legs - 1)).product())

@@ -77,12 +77,17 @@ pub fn chain_builder(
     let mut b = ModelBuilder::new(name);
     let mut parent = b.fixed_base(base);
     for (i, r) in rows.iter().enumerate() {
+        // Named as files spell them: angles in degrees.
+        let offset = match r.kind {
+            JointKind::Prismatic => ("offset", r.offset),
+            _ => ("offset_deg", r.offset.to_degrees()),
+        };
         for (field, v) in [
             ("a", r.a),
-            ("alpha", r.alpha),
+            ("alpha_deg", r.alpha.to_degrees()),
             ("d", r.d),
-            ("theta", r.theta),
-            ("offset", r.offset),
+            ("theta_deg", r.theta.to_degrees()),
+            offset,
         ] {
             finite(format!("joints[{i}].{field}"), v)?;
         }

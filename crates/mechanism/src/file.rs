@@ -156,7 +156,10 @@ struct ShapeFile {
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a model file (an object with `name`, `convention` and `joints`)"
+)]
 struct ModelFile {
     name: String,
     convention: Description,
@@ -194,8 +197,8 @@ pub const CONTRACT_EXAMPLE: &str = r#"{
 /// A 4×4 homogeneous matrix as a pose; it must be a rotation and a shift.
 pub fn pose_from_matrix(field: &str, m: &[[f64; 4]; 4]) -> Result<Pose, FieldError> {
     use nalgebra::{Matrix3, Rotation3, Translation3, UnitQuaternion};
-    if m.iter().flatten().any(|v| !v.is_finite()) {
-        return Err(FieldError::new(field, "must be finite numbers"));
+    for v in m.iter().flatten() {
+        finite(field, *v)?;
     }
     let r = Matrix3::from_fn(|i, j| m[i][j]);
     let orthogonal =
@@ -220,17 +223,9 @@ pub fn matrix_of(p: &Pose) -> [[f64; 4]; 4] {
 }
 
 fn parse(text: &str) -> Result<ModelFile, FieldError> {
-    let mut de = serde_json::Deserializer::from_str(text);
-    serde_path_to_error::deserialize(&mut de).map_err(|e| {
-        let path = e.path().to_string();
-        let message = e.into_inner().to_string();
-        let message = message
-            .split(" at line ")
-            .next()
-            .unwrap_or(&message)
-            .to_string();
-        FieldError::new(if path == "." { String::new() } else { path }, message)
-    })
+    let file: ModelFile = kinolab_common::error::from_json(text)?;
+    crate::model::check_size("joints", file.joints.len())?;
+    Ok(file)
 }
 
 /// Parse a model file. Mounted sub-mechanisms may only come from the
@@ -289,6 +284,7 @@ pub fn from_json_with(
             None => resolve(&m.model),
         }
         .map_err(|e| FieldError::new(format!("{field}.model"), e.to_string()))?;
+        crate::model::check_size(&field, b.joints.len() + sub.joints().len())?;
         let Some(port) = b.frames.iter().find(|f| f.name == m.at) else {
             return Err(FieldError::new(
                 format!("{field}.at"),
@@ -324,12 +320,24 @@ fn body_index(b: &ModelBuilder, name: &str, field: &str) -> Result<usize, FieldE
         .ok_or_else(|| FieldError::new(field, format!("no body named `{name}`")))
 }
 
-/// A joint's limits in radians or metres.
+/// A joint's limits in radians or metres, checked in the file's own units.
 fn limits(i: usize, j: &JointFile) -> Result<Option<[f64; 2]>, FieldError> {
     let prismatic = j.kind == JointKind::Prismatic;
+    let ordered = |name: &str, [lo, hi]: [f64; 2]| {
+        let field = format!("joints[{i}].{name}");
+        finite(field.as_str(), lo)?;
+        finite(field.as_str(), hi)?;
+        if lo > hi {
+            return Err(FieldError::new(
+                field,
+                format!("the lower limit {lo} is above the upper limit {hi}"),
+            ));
+        }
+        Ok([lo, hi])
+    };
     match (prismatic, j.limits_deg, j.limits) {
-        (false, Some([lo, hi]), None) => Ok(Some([lo.to_radians(), hi.to_radians()])),
-        (true, None, Some(l)) => Ok(Some(l)),
+        (false, Some(l), None) => Ok(Some(ordered("limits_deg", l)?.map(f64::to_radians))),
+        (true, None, Some(l)) => Ok(Some(ordered("limits", l)?)),
         (_, None, None) => Ok(None),
         (false, _, Some(_)) => Err(FieldError::new(
             format!("joints[{i}].limits"),
@@ -393,7 +401,7 @@ fn unit_axis(field: &str, v: [f64; 3]) -> Result<Unit<Vector3<f64>>, FieldError>
         finite(field, x)?;
     }
     Unit::try_new(Vector3::from(v), 1e-9)
-        .ok_or_else(|| FieldError::new(field, "an axis cannot be zero"))
+        .ok_or_else(|| FieldError::new(field, "an axis cannot be zero (or shorter than 1e-9)"))
 }
 
 /// Transforms and zero-position descriptions: a tree hung from `base`.

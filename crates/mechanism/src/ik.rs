@@ -504,7 +504,34 @@ impl Model {
     /// answer found, with `converged` saying whether it meets the tolerances.
     /// Couplings hold throughout and closed loops stay closed (their
     /// constraints join the goals).
+    ///
+    /// A solution is only called converged when its joint values and its
+    /// errors are finite numbers: an overflow never passes for an answer.
     pub fn solve(
+        &self,
+        goals: &[Goal],
+        seed: &[f64],
+        options: &Options,
+    ) -> Result<Solution, FieldError> {
+        for (i, goal) in goals.iter().enumerate() {
+            let p = match &goal.target {
+                Target::Position(p) => *p,
+                Target::Pose(pose) => pose.translation.vector,
+                Target::Orientation(_) => Vector3::zeros(),
+            };
+            for v in p.iter() {
+                crate::error::finite(format!("goals[{i}].position"), *v)?;
+            }
+        }
+        let mut solution = self.solve_checked(goals, seed, options)?;
+        let finite = solution.q.iter().all(|v| v.is_finite())
+            && solution.position_error.is_finite()
+            && solution.rotation_error.is_finite();
+        solution.converged &= finite;
+        Ok(solution)
+    }
+
+    fn solve_checked(
         &self,
         goals: &[Goal],
         seed: &[f64],

@@ -35,6 +35,8 @@ pub use compose::{Closure, Coupling, Group, LoopClosure};
 pub use error::FieldError;
 pub use ik::{Goal, Options, Solution, Target};
 pub use kinematics::Placement;
-pub use model::{Body, Frame, FrameRef, Joint, JointKind, Model, ModelBuilder, Pose, WORLD};
+pub use model::{
+    Body, Frame, FrameRef, Joint, JointKind, MAX_JOINTS, Model, ModelBuilder, Pose, WORLD,
+};
 pub use nalgebra::{Matrix4, UnitQuaternion, Vector3};
 pub use shapes::{Collisions, Obstacle, Part, Plane, Shape};

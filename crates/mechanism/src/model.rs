@@ -116,6 +116,22 @@ pub struct Model {
     pub(crate) commands: crate::special::Commands,
 }
 
+/// The most joints a model may have, mounted ones included: more than any
+/// robot in the lab, and few enough that every query stays fast (each
+/// frame keeps its chain to the root, so memory grows with its square).
+pub const MAX_JOINTS: usize = 512;
+
+/// `count` joints, or an error naming `field` when that is above [`MAX_JOINTS`].
+pub fn check_size(field: &str, count: usize) -> Result<(), FieldError> {
+    if count > MAX_JOINTS {
+        return Err(FieldError::new(
+            field,
+            format!("at most {MAX_JOINTS} joints in a model, got {count}"),
+        ));
+    }
+    Ok(())
+}
+
 /// Builds a [`Model`] part by part; [`ModelBuilder::build`] checks it.
 #[derive(Debug, Clone, Default)]
 pub struct ModelBuilder {
@@ -203,6 +219,7 @@ impl ModelBuilder {
 
     /// Check the tree and order it for traversal.
     pub fn build(self) -> Result<Model, FieldError> {
+        check_size("joints", self.joints.len())?;
         self.check_names()?;
         let parent_joint = self.check_joints()?;
         self.check_extras()?;
@@ -449,7 +466,8 @@ impl Model {
             ));
         }
         // The field name is only written out when something is wrong.
-        if let Some(i) = q.iter().position(|v| !v.is_finite()) {
+        let limit = crate::error::MAGNITUDE_LIMIT;
+        if let Some(i) = q.iter().position(|v| !v.is_finite() || v.abs() > limit) {
             crate::error::finite(format!("q[{i}]"), q[i])?;
         }
         Ok(())

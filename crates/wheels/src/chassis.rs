@@ -3,7 +3,7 @@
 
 use nalgebra::{DMatrix, Vector3};
 
-use crate::error::{FieldError, finite};
+use crate::error::{FieldError, bounded, finite, length};
 use kinolab_common::angle::wrap;
 
 use crate::wheel::{Wheel, WheelKind, WheelRows};
@@ -175,7 +175,11 @@ impl Chassis {
                 format!("a {} wheel cannot be steered", wheel.kind.name()),
             ));
         }
-        finite(format!("{field}.beta"), beta)?;
+        bounded(
+            format!("{field}.beta_deg"),
+            beta.to_degrees(),
+            MAX_ANGLE_DEG,
+        )?;
         let mut wheels = self.wheels.clone();
         let group: Vec<usize> = self
             .inputs
@@ -272,28 +276,28 @@ pub(crate) fn nearest_half_turn(current: f64, target: f64) -> f64 {
     current + d
 }
 
+/// The largest wheel angle a file may give, degrees (ten turns).
+const MAX_ANGLE_DEG: f64 = 3600.0;
+
 fn check_wheel(i: usize, w: &Wheel) -> Result<(), FieldError> {
+    // Fields named as files spell them; angles checked in degrees.
     let field = |name: &str| format!("wheels[{i}].{name}");
-    finite(field("alpha"), w.alpha)?;
-    finite(field("beta"), w.beta)?;
+    bounded(field("alpha_deg"), w.alpha.to_degrees(), MAX_ANGLE_DEG)?;
+    bounded(field("beta_deg"), w.beta.to_degrees(), MAX_ANGLE_DEG)?;
     finite(field("l"), w.l)?;
-    finite(field("radius"), w.radius)?;
     if w.l < 0.0 {
         return Err(FieldError::new(
             field("l"),
             format!("a distance cannot be negative, got {}", w.l),
         ));
     }
-    if w.radius <= 0.0 {
-        return Err(FieldError::new(
-            field("radius"),
-            format!("must be above 0, got {}", w.radius),
-        ));
-    }
+    length(field("radius"), w.radius)?;
     match w.kind {
         WheelKind::Castor { offset } => {
             finite(field("offset"), offset)?;
-            if offset <= 0.0 {
+            if offset > 0.0 {
+                length(field("offset"), offset)?;
+            } else {
                 return Err(FieldError::new(
                     field("offset"),
                     format!(
@@ -303,10 +307,10 @@ fn check_wheel(i: usize, w: &Wheel) -> Result<(), FieldError> {
             }
         }
         WheelKind::Swedish { gamma } => {
-            finite(field("gamma"), gamma)?;
+            bounded(field("gamma_deg"), gamma.to_degrees(), MAX_ANGLE_DEG)?;
             if gamma.cos() < 1e-6 {
                 return Err(FieldError::new(
-                    field("gamma"),
+                    field("gamma_deg"),
                     format!(
                         "the roller angle must lie strictly between -90° and 90°, got {:.3}°",
                         gamma.to_degrees()

@@ -36,7 +36,10 @@ struct WheelEntry {
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a robot file (an object with `name` and `wheels`)"
+)]
 struct RobotFile {
     #[serde(default)]
     name: String,
@@ -46,14 +49,7 @@ struct RobotFile {
 impl Chassis {
     /// Read a robot file. Errors name the JSON path of the bad field.
     pub fn from_json(text: &str) -> Result<Self, FieldError> {
-        let de = &mut serde_json::Deserializer::from_str(text);
-        let file: RobotFile = serde_path_to_error::deserialize(de).map_err(|e| {
-            let path = e.path().to_string();
-            let inner = e.into_inner();
-            let message = inner.to_string();
-            // serde_json appends " at line L column C"; keep it, it helps.
-            FieldError::new(if path == "." { String::new() } else { path }, message)
-        })?;
+        let file: RobotFile = kinolab_common::error::from_json(text)?;
         let wheels = file
             .wheels
             .iter()

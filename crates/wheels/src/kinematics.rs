@@ -223,7 +223,7 @@ impl Chassis {
         };
         for (i, ((w, rows), spin)) in self.wheels().iter().zip(self.rows()).zip(spins).enumerate() {
             if let Some(spin) = spin {
-                finite(format!("wheels[{i}] spin"), *spin)?;
+                finite(format!("wheels[{i}]"), *spin)?;
                 if w.kind != WheelKind::Spherical {
                     add(rows.rolling, rows.spin_gain * spin);
                 }

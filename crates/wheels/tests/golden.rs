@@ -205,7 +205,7 @@ fn bad_layouts_name_the_field() {
     let err = |code: &str| Chassis::from_compact("x", code).unwrap_err().to_string();
     assert_eq!(
         err("f,90,0,0.25,0"),
-        "wheels[0].radius: must be above 0, got 0"
+        "wheels[0].radius: must be greater than 0, got 0"
     );
     assert!(
         err("f,90,0,0.25,0.1;f,90,0,0.25,0.1")
@@ -214,14 +214,14 @@ fn bad_layouts_name_the_field() {
     assert!(err("f,nan,0,0.25,0.1").contains("alpha_deg must be a number"));
     assert!(err("f,90,0,-1,0.1").starts_with("wheels[0].l: a distance cannot be negative"));
     assert!(err("c,90,0,0.2,0.1,d=0").starts_with("wheels[0].offset:"));
-    assert!(err("w,90,0,0.2,0.1,g=90").starts_with("wheels[0].gamma:"));
+    assert!(err("w,90,0,0.2,0.1,g=90").starts_with("wheels[0].gamma_deg:"));
     assert!(err("f,90,0,0.2,0.1,s=belt").starts_with("wheels[0].steer_group: only steered wheels"));
     assert!(err("").starts_with("wheels: a robot needs at least one wheel"));
     assert!(err("q,1,2,3,4").contains("unknown kind \"q\""));
     let nan = Wheel::new(WheelKind::Fixed, f64::NAN, 0.0, 0.2, 0.1);
     assert_eq!(
         Chassis::new("x", vec![nan]).unwrap_err().to_string(),
-        "wheels[0].alpha: must be a finite number, got NaN"
+        "wheels[0].alpha_deg: must be a finite number, got NaN"
     );
 }
 
@@ -260,7 +260,10 @@ fn robot_files_read_write_and_explain_errors() {
     );
     let e =
         bad(r#"{"wheels":[{"kind":"fixed","alpha_deg":0,"beta_deg":0,"l":0.2,"radius":-0.1}]}"#);
-    assert_eq!(e.to_string(), "wheels[0].radius: must be above 0, got -0.1");
+    assert_eq!(
+        e.to_string(),
+        "wheels[0].radius: must be greater than 0, got -0.1"
+    );
     let e =
         bad(r#"{"wheels":[{"kind":"fixed","alpha_deg":"x","beta_deg":0,"l":0.2,"radius":0.1}]}"#);
     assert_eq!(e.field, "wheels[0].alpha_deg");

@@ -10,7 +10,10 @@ use crate::world::{Light, World};
 use crate::{FieldError, Pose, Rect, Vec2};
 
 #[derive(Debug, Clone, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a world file (an object with `bounds`)"
+)]
 struct WorldFile {
     #[serde(default)]
     name: String,

@@ -10,6 +10,9 @@
 //! - `dist`: build the static site into `dist/`.
 //! - `bench`: native (criterion) and wasm (headless Chromium) benchmarks
 //!   side by side, wasm size, and time to first frame.
+//! - `fuzz [--cases N] [--seed S]`: the long reliability run of the
+//!   `kinolab` command (100 000 generated cases by default), its table of
+//!   counts per command and class; failing cases join the regression folder.
 //!
 //! Every tool is installed from a package registry by name; nothing
 //! downloads binaries at run time (trunk runs with `--offline`).
@@ -31,10 +34,11 @@ fn main() -> ExitCode {
         "check" => tasks::check(),
         "dist" => tasks::dist(),
         "bench" => tasks::bench(rest),
+        "fuzz" => tasks::fuzz(rest),
         "setup" => setup::ensure(setup::Needs { browser: true }),
         _ => {
             eprintln!(
-                "usage: cargo xtask <serve [--dev] | test | check | dist | bench [--quick] | setup>"
+                "usage: cargo xtask <serve [--dev] | test | check | dist | bench [--quick] | fuzz [--cases N] | setup>"
             );
             return ExitCode::from(2);
         }

@@ -243,3 +243,34 @@ pub fn bench(args: &[String]) -> Result {
         ],
     ))
 }
+
+/// The long reliability run: the release `kinolab` binary on the
+/// regression folder and `--cases N` generated cases (100 000 unless
+/// given), with the table of counts per command and class. Failing cases
+/// are saved into `tests/fuzz/regressions/` so CI replays them forever.
+pub fn fuzz(args: &[String]) -> Result {
+    run(&mut cargo(&[
+        "build",
+        "--release",
+        "-p",
+        "kinolab-cli",
+        "-p",
+        "kinolab-fuzz",
+    ]))?;
+    let root = crate::setup::root();
+    let release = root.join("target/release");
+    let mut cmd = tool(
+        &release.join("kinolab-fuzz").to_string_lossy(),
+        &[
+            "--binary",
+            &release.join("kinolab").to_string_lossy(),
+            "--save",
+            &root.join("tests/fuzz/regressions").to_string_lossy(),
+        ],
+    );
+    cmd.args(args);
+    if !args.iter().any(|a| a == "--cases") {
+        cmd.args(["--cases", "100000"]);
+    }
+    run(&mut cmd)
+}

@@ -1,0 +1,385 @@
+//! A case for each command from a seed number: usually a valid input with
+//! a little damage, sometimes a lot, sometimes a path that is not a file.
+
+use serde_json::Value;
+
+use crate::case::{Case, FileSpec, Sink, to_hex};
+use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
+use crate::seeds::Seeds;
+
+/// Every command the generators cover, with its share of the cases.
+pub const COMMANDS: [(&str, u32); 14] = [
+    ("leg-events", 2),
+    ("stability", 4),
+    ("analyze", 8),
+    ("drive", 10),
+    ("robots", 2),
+    ("simulate", 8),
+    ("batch", 6),
+    ("gains", 4),
+    ("fk", 10),
+    ("ik", 8),
+    ("field", 10),
+    ("run", 8),
+    ("lessons", 6),
+    ("usage", 4),
+];
+
+/// The case numbered `index` of the campaign `seed`.
+pub fn case(seeds: &Seeds, seed: u64, index: u64) -> Case {
+    let mut dice = Dice::new(kinolab_common::random::hash(seed, index, 0xf022));
+    let total: u32 = COMMANDS.iter().map(|(_, w)| w).sum();
+    let mut roll = dice.below(total as usize) as u32;
+    let command = COMMANDS
+        .iter()
+        .find(|(_, w)| {
+            let hit = roll < *w;
+            roll = roll.saturating_sub(*w);
+            hit
+        })
+        .map_or("usage", |(c, _)| c);
+    let mut case = for_command(&mut dice, seeds, command);
+    // Now and then the answer has nowhere to go.
+    if dice.chance(0.01) {
+        case.sink = *dice.pick(&[Sink::Full, Sink::Closed]);
+    }
+    case
+}
+
+fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
+    let mut g = Gen {
+        dice,
+        case: Case::new(command, vec![command.to_owned()]),
+    };
+    match command {
+        "leg-events" => {
+            let legs = g.pick_text(&[
+                "0",
+                "1",
+                "2",
+                "6",
+                "17",
+                "18",
+                "100",
+                "-1",
+                "4294967296",
+                "x",
+            ]);
+            g.arg(&legs);
+        }
+        "stability" => {
+            g.option_numbers("--com", 2);
+            let feet: Vec<String> = (0..g.dice.below(8))
+                .map(|_| g.dice.numbers_text(2))
+                .collect();
+            g.option("--feet", &feet.join(";"));
+        }
+        "analyze" => {
+            g.file_arg(&seeds.robots, &seeds.robot_ids, "robot.json");
+        }
+        "drive" => {
+            g.file_arg(&seeds.robots, &seeds.robot_ids, "robot.json");
+            match g.dice.below(5) {
+                0 | 1 => g.option_numbers("--twist", 3),
+                2 | 3 => {
+                    let n = g.dice.below(7);
+                    let spins: Vec<String> = (0..n)
+                        .map(|_| {
+                            if g.dice.chance(0.2) {
+                                "-".to_owned()
+                            } else {
+                                format_number(g.dice.number())
+                            }
+                        })
+                        .collect();
+                    g.option("--wheels", &spins.join(","));
+                }
+                _ => {}
+            }
+            if g.dice.chance(0.3) {
+                g.option_numbers("--theta", 1);
+            }
+        }
+        "robots" => {
+            if g.dice.chance(0.7) {
+                let id = if g.dice.chance(0.8) {
+                    g.dice.pick(&seeds.robot_ids).clone()
+                } else {
+                    g.dice.nasty_string()
+                };
+                g.arg(&id);
+            }
+        }
+        "simulate" => {
+            g.file_arg(&seeds.control_runs, &[], "run.json");
+        }
+        "batch" => {
+            g.file_arg(&seeds.control_runs, &[], "run.json");
+            for (option, count) in [("--radius", 1), ("--heading-deg", 1)] {
+                if g.dice.chance(0.5) {
+                    g.option_numbers(option, count);
+                }
+            }
+            if g.dice.chance(0.6) {
+                let count = g.pick_text(&["1", "4", "16", "100", "1000", "1001", "0", "-3", "1e3"]);
+                g.option("--count", &count);
+            }
+            if g.dice.chance(0.3) {
+                g.flag("--paths");
+            }
+        }
+        "gains" => {
+            let text = g.dice.numbers_text(3);
+            g.arg(&text);
+        }
+        "fk" | "ik" => model_case(&mut g, seeds, command == "fk"),
+        "field" => field_case(&mut g, seeds),
+        "run" => {
+            g.file_arg(&seeds.behaviour_runs, &[], "behaviours.run.json");
+        }
+        "lessons" => lessons_case(&mut g, seeds),
+        _ => usage_case(&mut g),
+    }
+    g.case
+}
+
+/// Builds one case.
+struct Gen<'d> {
+    dice: &'d mut Dice,
+    case: Case,
+}
+
+impl Gen<'_> {
+    fn arg(&mut self, text: &str) {
+        self.case.args.push(text.to_owned());
+    }
+
+    fn flag(&mut self, name: &str) {
+        self.arg(name);
+    }
+
+    fn option(&mut self, name: &str, value: &str) {
+        self.arg(name);
+        self.arg(value);
+    }
+
+    fn option_numbers(&mut self, name: &str, count: usize) {
+        let text = self.dice.numbers_text(count);
+        self.option(name, &text);
+    }
+
+    fn pick_text(&mut self, items: &[&str]) -> String {
+        (*self.dice.pick(items)).to_owned()
+    }
+
+    /// The input file: a seed (damaged or not), a catalogue id, or a path
+    /// that is no file at all. Returns the seed text used, if any.
+    fn file_arg(&mut self, seeds: &[String], ids: &[String], name: &str) -> Option<String> {
+        let roll = self.dice.below(100);
+        if roll < 10 && !ids.is_empty() {
+            let id = if self.dice.chance(0.85) {
+                self.dice.pick(ids).clone()
+            } else {
+                self.dice.nasty_string()
+            };
+            self.arg(&format!("catalogue:{id}"));
+            return None;
+        }
+        if roll < 16 || seeds.is_empty() {
+            self.special_path(name);
+            return None;
+        }
+        let seed = self.dice.pick(seeds).clone();
+        let spec = if roll < 80 {
+            FileSpec::Text(self.damaged_tree(&seed))
+        } else {
+            let bytes = damage_text(self.dice, &seed);
+            match String::from_utf8(bytes) {
+                Ok(text) if text.len() > 200_000 => FileSpec::Repeat {
+                    text: text.chars().take(1).collect(),
+                    count: text.len(),
+                },
+                Ok(text) => FileSpec::Text(text),
+                Err(e) => FileSpec::Hex(to_hex(e.as_bytes())),
+            }
+        };
+        let undamaged = matches!(&spec, FileSpec::Text(t) if *t == seed);
+        self.case.files.push((name.to_owned(), spec));
+        self.arg(name);
+        undamaged.then_some(seed)
+    }
+
+    /// The seed with a few values changed (none a fifth of the time).
+    fn damaged_tree(&mut self, seed: &str) -> String {
+        let Ok(mut tree) = serde_json::from_str::<Value>(seed) else {
+            return seed.to_owned();
+        };
+        let count = *self.dice.pick(&[0, 0, 0, 1, 1, 2, 3, 6]);
+        if count == 0 {
+            return seed.to_owned();
+        }
+        mutate_tree(self.dice, &mut tree, count);
+        tree.to_string()
+    }
+
+    fn special_path(&mut self, name: &str) {
+        match self.dice.below(8) {
+            0 => self.arg("missing.json"),
+            1 => {
+                self.case.files.push((name.to_owned(), FileSpec::Folder));
+                self.arg(name);
+            }
+            2 => {
+                self.case.files.push((name.to_owned(), FileSpec::Fifo));
+                self.arg(name);
+            }
+            3 => self.arg("/dev/zero"),
+            4 => self.arg("/dev/null"),
+            5 => {
+                let odd = "odd\nname.json";
+                self.case
+                    .files
+                    .push((odd.to_owned(), FileSpec::Text("{".into())));
+                self.arg(odd);
+            }
+            6 => {
+                self.case.files.push((
+                    name.to_owned(),
+                    FileSpec::Repeat {
+                        text: "n".into(),
+                        count: 5_000_000,
+                    },
+                ));
+                self.arg(name);
+            }
+            _ => {
+                // A 3 MB key: under the size bound, too long to repeat.
+                let text = format!("{{\"{}\": 1}}", "k".repeat(3_000_000));
+                self.case
+                    .files
+                    .push((name.to_owned(), FileSpec::Text(text)));
+                self.arg(name);
+            }
+        }
+    }
+}
+
+fn model_case(g: &mut Gen<'_>, seeds: &Seeds, fk: bool) {
+    let seed = g.file_arg(&seeds.models, &seeds.model_ids, "arm.model.json");
+    let dof = seed
+        .and_then(|s| kinolab_mechanism::file::from_json(&s).ok())
+        .map_or_else(|| g.dice.below(8), |m| m.dof());
+    let q_option = if fk { "--q" } else { "--seed" };
+    if fk || g.dice.chance(0.4) {
+        g.option_numbers(q_option, dof);
+    }
+    if !fk {
+        g.option_numbers("--position", 3);
+        if g.dice.chance(0.3) {
+            let rotation = if g.dice.chance(0.5) {
+                "1,0,0,0,1,0,0,0,1".to_owned()
+            } else {
+                g.dice.numbers_text(9)
+            };
+            g.option("--rotation", &rotation);
+        }
+    }
+    if g.dice.chance(0.2) {
+        let frame = g.pick_text(&["tool", "base", "world", "q1", "nope", "tool\ntool"]);
+        g.option("--frame", &frame);
+    }
+}
+
+fn field_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    g.file_arg(&seeds.fields, &seeds.field_ids, "map.field.json");
+    match g.dice.below(4) {
+        0 => {
+            let points: Vec<String> = (0..g.dice.below(5) + 1)
+                .map(|_| g.dice.numbers_text(2))
+                .collect();
+            g.option("--at", &points.join(";"));
+        }
+        1 => {
+            g.flag("--minima");
+            if g.dice.chance(0.9) {
+                g.option_numbers("--box", 4);
+            }
+        }
+        2 => {
+            g.option_numbers("--descend", 2);
+            if g.dice.chance(0.4) {
+                g.option_numbers("--step", 1);
+            }
+            if g.dice.chance(0.4) {
+                let steps = g.pick_text(&["1", "100", "10000", "1000000", "0", "-1"]);
+                g.option("--max-steps", &steps);
+            }
+        }
+        _ => {
+            if g.dice.chance(0.5) {
+                g.option_numbers("--at", 2);
+                g.flag("--minima");
+            }
+        }
+    }
+}
+
+fn lessons_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    if g.dice.chance(0.1) {
+        return;
+    }
+    let lesson = g.dice.pick(&seeds.lessons).clone();
+    let unit = "---\ntitle: A unit\n---\n\nWhat the unit is about.\n";
+    g.case.files.push((
+        "course/01-unit/unit.md".to_owned(),
+        FileSpec::Text(unit.into()),
+    ));
+    let text = match g.dice.below(6) {
+        0 => lesson,
+        1 => format!("{lesson}\n{} deep\n", ">".repeat(g.dice.below(20_000) + 1)),
+        2 => format!("{lesson}\n{}x\n", "- ".repeat(g.dice.below(20_000) + 1)),
+        3 => format!("{lesson}\n{}x{}\n", "*".repeat(5000), "*".repeat(5000)),
+        4 => String::from_utf8_lossy(&damage_text(g.dice, &lesson)).into_owned(),
+        _ => lesson.replace("minutes: 3", &format!("minutes: {}", g.dice.nasty_string())),
+    };
+    g.case.files.push((
+        "course/01-unit/01-lesson.md".to_owned(),
+        FileSpec::Text(text),
+    ));
+    g.arg("course");
+}
+
+fn usage_case(g: &mut Gen<'_>) {
+    g.case.args.clear();
+    match g.dice.below(6) {
+        0 => {}
+        1 => g.arg("--bogus"),
+        2 => g.arg("no-such-command"),
+        3 => g.arg("fk"),
+        4 => {
+            g.arg("ik");
+            g.arg("catalogue:puma560");
+        }
+        _ => {
+            g.arg("gains");
+            g.arg("1,2,3");
+            g.arg("--extra\nline");
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cases_are_reproducible_and_cover_every_command() {
+        let seeds = Seeds::load();
+        assert!(!seeds.robots.is_empty() && !seeds.fields.is_empty());
+        assert!(!seeds.behaviour_runs.is_empty() && !seeds.worlds.is_empty());
+        assert_eq!(case(&seeds, 1, 5), case(&seeds, 1, 5));
+        let commands: std::collections::BTreeSet<String> =
+            (0..2000).map(|i| case(&seeds, 1, i).command).collect();
+        assert_eq!(commands.len(), COMMANDS.len(), "{commands:?}");
+    }
+}
