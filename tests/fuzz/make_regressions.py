@@ -166,3 +166,34 @@ case("no-joints", "fk", ["fk", "m.model.json"],
 case("duplicate-key", "simulate", ["simulate", "run.json"],
      [("run.json", text('{"dt": 0.001, "dt": 0.002, "controller": {"kind": "polar", "k_rho": 3, "k_alpha": 8, "k_beta": -1.5}, "start": {"x": 1, "y": 0, "theta_deg": 0}, "goal": {"x": 0, "y": 0, "theta_deg": 0}}'))],
      refused("duplicate field `dt`"), note="duplicate keys")
+# Round-two commands inherit the same rules
+GAIT = {"name": "crawl", "duty_factor": 0.75, "stride": 0.2, "com": [0, 0],
+        "legs": [{"name": "LF", "x": 0.3, "y": 0.2, "phase": 0.25}, {"name": "RF", "x": 0.3, "y": -0.2, "phase": 0.75},
+                 {"name": "LH", "x": -0.3, "y": 0.2, "phase": 0.0}, {"name": "RH", "x": -0.3, "y": -0.2, "phase": 0.5}]}
+case("duty-one", "gait", ["gait", "g.gait.json"], [("g.gait.json", text(json.dumps(dict(GAIT, duty_factor=1))))],
+     refused("duty_factor"), note="a duty factor of 1 (never lifting) is outside (0, 1)")
+case("phase-one", "gait", ["gait", "g.gait.json"],
+     [("g.gait.json", text(json.dumps(dict(GAIT, legs=[dict(GAIT["legs"][0], phase=1.0)]))))],
+     refused("legs[0].phase"), note="a phase of 1 is the same instant as 0")
+case("no-legs", "gait", ["gait", "g.gait.json"], [("g.gait.json", text(json.dumps(dict(GAIT, legs=[]))))],
+     refused("legs"), note="fewer than one leg")
+case("flight", "gait", ["gait", "g.gait.json", "--samples", "50"],
+     [("g.gait.json", text(json.dumps(dict(GAIT, duty_factor=0.2))))],
+     {"exit": 0, "stdout_contains": ['"margin":null', '"statically_stable":false']},
+     note="a running gait has instants with no foot down: the margin is null there, by the contract")
+case("samples-bound", "gait", ["gait", "catalogue:hexapod-wave", "--samples", "100001"], [],
+     refused("--samples"), note="samples are bounded")
+CPG = {"frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"], "target_phases": [0.25, 0.75, 0.0, 0.5],
+       "weight": 2.0, "initial_deg": [0, 10, 20, 30], "dt": 0.001, "duration": 10.0}
+case("tiny-dt", "cpg", ["cpg", "c.cpg.json"], [("c.cpg.json", text(json.dumps(dict(CPG, dt=1e-9))))],
+     refused("dt", "steps"), note="duration / dt is bounded")
+case("lengths", "cpg", ["cpg", "c.cpg.json"], [("c.cpg.json", text(json.dumps(dict(CPG, initial_deg=[0]))))],
+     refused("initial_deg"), note="one initial phase per leg")
+case("start-in-obstacle", "plan", ["plan", "catalogue:two-rooms", "--from", "5.1,1", "--to", "9,5", "--cell", "0.25"], [],
+     refused("--from"), note="a start in an occupied cell is bad input")
+case("cell-bound", "plan", ["plan", "catalogue:two-rooms", "--from", "1,1", "--to", "9,5", "--cell", "0.0001"], [],
+     refused("--cell"), note="the grid's cell count is bounded")
+case("walled-in", "plan", ["plan", "w.world.json", "--from", "1,1", "--to", "3,3", "--cell", "0.25"],
+     [("w.world.json", text(json.dumps({"bounds": [0, 0, 4, 4], "robot_radius": 0.1,
+        "obstacles": [{"kind": "wall", "from": [2, 0], "to": [2, 4], "thickness": 0.2}]})))],
+     {"exit": 0, "stdout_contains": ['"cost":null']}, note="no path is an answer, not an error")

@@ -7,8 +7,10 @@
 mod behaviour;
 mod control;
 mod input;
+mod legs;
 mod mechanism;
 mod output;
+mod plan;
 mod wheels;
 
 use std::path::PathBuf;
@@ -158,6 +160,33 @@ enum Command {
         /// A behaviour run file (`*.run.json`, see the README).
         run: PathBuf,
     },
+    /// A periodic gait through its cycle: the feet in stance, their positions, the static stability margin.
+    Gait {
+        /// A gait file (`*.gait.json`, see the contract), or `catalogue:<id>` (`quadruped-crawl`, `hexapod-tripod`, …).
+        gait: PathBuf,
+        /// Samples over the cycle, at τ = (k + ½)/N.
+        #[arg(long, default_value_t = 100, allow_hyphen_values = true)]
+        samples: usize,
+    },
+    /// Phase oscillators, one per leg, coupled towards a gait: where they end and whether they lock.
+    Cpg {
+        /// A CPG file (`*.cpg.json`, see the contract).
+        cpg: PathBuf,
+    },
+    /// The shortest path across a world's occupancy grid (8-connected, no corner cutting).
+    Plan {
+        /// A world file (see the contract), or `catalogue:<id>`.
+        world: PathBuf,
+        /// Start, m: X,Y
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+        from: String,
+        /// Goal, m: X,Y
+        #[arg(long, value_name = "X,Y", allow_hyphen_values = true)]
+        to: String,
+        /// Cell side, m.
+        #[arg(long, allow_hyphen_values = true)]
+        cell: f64,
+    },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
         /// A lessons folder to check; the embedded lessons when omitted.
@@ -281,6 +310,14 @@ fn run(command: Command) -> Result<Value, Failure> {
             },
         ),
         Command::Run { run } => behaviour::run(&run),
+        Command::Gait { gait, samples } => legs::gait(&gait, samples),
+        Command::Cpg { cpg } => legs::cpg(&cpg),
+        Command::Plan {
+            world,
+            from,
+            to,
+            cell,
+        } => plan::plan(&world, &from, &to, cell),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

@@ -170,6 +170,14 @@ fn bad_input_is_one_line_naming_the_field() {
     assert!(!stderr.contains("panicked"));
 }
 
+/// The call exits 0 with one JSON document and nothing on stderr.
+fn ok(args: &[&str]) -> serde_json::Value {
+    let (code, stdout, stderr) = kinolab(args);
+    assert_eq!(code, 0, "{args:?}: {stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
+    serde_json::from_str(&stdout).unwrap()
+}
+
 /// The call exits 2 with one stderr line containing `want`, and no stdout.
 fn fails_with(args: &[&str], want: &str) {
     let (code, stdout, stderr) = kinolab(args);
@@ -694,5 +702,123 @@ fn run_reports_a_behaviour_run() {
     assert!(
         names.contains(&"go") && names.contains(&"avoid"),
         "{names:?}"
+    );
+}
+
+/// The contract's gait example: at τ = 0.005 the hind-left leg swings and
+/// the others stand, each foot where the stance line puts it.
+#[test]
+fn gait_follows_the_contract() {
+    let path = robot_file(
+        "crawl.gait.json",
+        r#"{ "name": "quadruped-crawl", "duty_factor": 0.75, "stride": 0.2, "com": [0.0, 0.0],
+  "legs": [ { "name": "LF", "x": 0.3, "y": 0.2, "phase": 0.25 }, { "name": "RF", "x": 0.3, "y": -0.2, "phase": 0.75 },
+            { "name": "LH", "x": -0.3, "y": 0.2, "phase": 0.0 }, { "name": "RH", "x": -0.3, "y": -0.2, "phase": 0.5 } ] }"#,
+    );
+    let v = ok(&["gait", &path]);
+    let samples = v["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 100);
+    let first = &samples[0];
+    assert_eq!(first["tau"], 0.005);
+    assert_eq!(first["stance"], serde_json::json!(["LF", "RF", "RH"]));
+    // x = x_i + L/2 − L (σ − (1 − β))/β with σ = (τ − φ) mod 1.
+    let lf = 0.3 + 0.1 - 0.2 * ((0.005 - 0.25 + 1.0) - 0.25) / 0.75;
+    let rh = -0.3 + 0.1 - 0.2 * ((0.005 - 0.5 + 1.0) - 0.25) / 0.75;
+    let feet = first["feet"].as_array().unwrap();
+    assert!((feet[0][0].as_f64().unwrap() - lf).abs() < 1e-12);
+    assert!((feet[2][0].as_f64().unwrap() - rh).abs() < 1e-12);
+    assert_eq!(feet[1][1], -0.2);
+    let min = v["min_margin"].as_f64().unwrap();
+    let smallest = samples
+        .iter()
+        .map(|s| s["margin"].as_f64().unwrap())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(min, smallest);
+    assert_eq!(v["statically_stable"], min > 0.0);
+    assert!(min > 0.0, "the crawl with the CoM at the centre is static");
+    let bad = robot_file(
+        "bad.gait.json",
+        r#"{ "duty_factor": 1.0, "stride": 0.2, "legs": [ { "name": "LF", "x": 0.3, "y": 0.2, "phase": 0.25 } ] }"#,
+    );
+    fails_with(&["gait", &bad], "bad.gait.json: duty_factor:");
+    fails_with(&["gait", &path, "--samples", "0"], "--samples:");
+}
+
+#[test]
+fn cpg_follows_the_contract() {
+    let path = robot_file(
+        "crawl.cpg.json",
+        r#"{ "frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"], "target_phases": [0.25, 0.75, 0.0, 0.5],
+  "weight": 2.0, "initial_deg": [0, 10, 20, 30], "dt": 0.001, "duration": 10.0 }"#,
+    );
+    let v = ok(&["cpg", &path]);
+    assert_eq!(v["locked"], true);
+    let lag: Vec<f64> = serde_json::from_value(v["lag"].clone()).unwrap();
+    for (got, want) in lag.iter().zip([0.0, 0.5, 0.75, 0.25]) {
+        let d = (got - want).rem_euclid(1.0);
+        assert!(d.min(1.0 - d) < 1e-6, "{got} vs {want}");
+    }
+    // Ten cycles at 1 Hz: θ₀ has turned 3600° give or take what locking
+    // took, and the final phases differ by the lags.
+    let final_deg: Vec<f64> = serde_json::from_value(v["final_deg"].clone()).unwrap();
+    assert!((final_deg[0] - 3600.0).abs() < 180.0, "{final_deg:?}");
+    for (theta, lag) in final_deg.iter().zip(&lag) {
+        let turns = (final_deg[0] - theta) / 360.0 - lag;
+        assert!((turns - turns.round()).abs() < 1e-9, "{theta} {lag}");
+    }
+}
+
+#[test]
+fn plan_follows_the_contract() {
+    let path = robot_file(
+        "two-rooms.world.json",
+        r#"{ "name": "two-rooms", "bounds": [0.0, 0.0, 10.0, 6.0], "robot_radius": 0.2,
+  "obstacles": [ { "kind": "circle", "x": 3.0, "y": 3.0, "radius": 0.5 },
+                 { "kind": "polygon", "points": [[5, 0], [5.2, 0], [5.2, 4], [5, 4]] },
+                 { "kind": "wall", "from": [7, 2], "to": [7, 6], "thickness": 0.1 } ] }"#,
+    );
+    let v = ok(&[
+        "plan", &path, "--from", "1,1", "--to", "9,5", "--cell", "0.5",
+    ]);
+    let cells = v["cells"].as_array().unwrap();
+    assert_eq!(cells.first().unwrap(), &serde_json::json!([2, 2]));
+    assert_eq!(cells.last().unwrap(), &serde_json::json!([18, 10]));
+    // The cost is the summed step lengths of the cells given.
+    let mut cost = 0.0;
+    for w in cells.windows(2) {
+        let di = (w[1][0].as_i64().unwrap() - w[0][0].as_i64().unwrap()).abs();
+        let dj = (w[1][1].as_i64().unwrap() - w[0][1].as_i64().unwrap()).abs();
+        assert!(di <= 1 && dj <= 1 && di + dj > 0);
+        cost += if di + dj == 2 { 0.5 * 2f64.sqrt() } else { 0.5 };
+    }
+    assert!((v["cost"].as_f64().unwrap() - cost).abs() < 1e-9);
+    assert_eq!(v["points"][0], serde_json::json!([1.25, 1.25]));
+    // Walled in: no path, exit 0 and a null cost.
+    let boxed = robot_file(
+        "boxed.world.json",
+        r#"{ "bounds": [0, 0, 4, 4], "robot_radius": 0.1,
+  "obstacles": [ { "kind": "wall", "from": [2, 0], "to": [2, 4], "thickness": 0.2 } ] }"#,
+    );
+    let v = ok(&[
+        "plan", &boxed, "--from", "1,1", "--to", "3,3", "--cell", "0.25",
+    ]);
+    assert!(v["cost"].is_null() && v["cells"].as_array().unwrap().is_empty());
+    fails_with(
+        &[
+            "plan", &path, "--from", "3,3", "--to", "9,5", "--cell", "0.5",
+        ],
+        "--from:",
+    );
+    fails_with(
+        &[
+            "plan", &path, "--from", "1,1", "--to", "11,5", "--cell", "0.5",
+        ],
+        "--to:",
+    );
+    fails_with(
+        &[
+            "plan", &path, "--from", "1,1", "--to", "9,5", "--cell", "-1",
+        ],
+        "--cell:",
     );
 }

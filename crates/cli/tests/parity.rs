@@ -237,6 +237,47 @@ fn field_and_behaviour_reports_match() {
     );
 }
 
+/// The contract's examples of the legged and planning commands.
+const GAIT: &str = r#"{ "name": "quadruped-crawl", "duty_factor": 0.75, "stride": 0.2, "com": [0.0, 0.0],
+  "legs": [ { "name": "LF", "x": 0.3, "y": 0.2, "phase": 0.25 }, { "name": "RF", "x": 0.3, "y": -0.2, "phase": 0.75 },
+            { "name": "LH", "x": -0.3, "y": 0.2, "phase": 0.0 }, { "name": "RH", "x": -0.3, "y": -0.2, "phase": 0.5 } ] }"#;
+const CPG: &str = r#"{ "frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"], "target_phases": [0.25, 0.75, 0.0, 0.5],
+  "weight": 2.0, "initial_deg": [0, 10, 20, 30], "dt": 0.001, "duration": 10.0 }"#;
+const WORLD: &str = r#"{ "name": "two-rooms", "bounds": [0.0, 0.0, 10.0, 6.0], "robot_radius": 0.2,
+  "obstacles": [ { "kind": "circle", "x": 3.0, "y": 3.0, "radius": 0.5 },
+                 { "kind": "polygon", "points": [[5, 0], [5.2, 0], [5.2, 4], [5, 4]] },
+                 { "kind": "wall", "from": [7, 2], "to": [7, 6], "thickness": 0.1 } ] }"#;
+
+#[test]
+fn gait_cpg_and_plan_reports_match() {
+    let parse = |t: &str| serde_json::from_str::<Value>(t).unwrap();
+    let gait = file("crawl.gait.json", &parse(GAIT));
+    assert_same!(
+        cli(&["gait", &gait, "--samples", "40"]),
+        api_ok(kinolab_js::legs_api::gait(parse(GAIT), 40)),
+        "gait"
+    );
+    let cpg = file("crawl.cpg.json", &parse(CPG));
+    assert_same!(
+        cli(&["cpg", &cpg]),
+        api_ok(kinolab_js::legs_api::cpg(parse(CPG))),
+        "cpg"
+    );
+    let world = file("two-rooms.world.json", &parse(WORLD));
+    assert_same!(
+        cli(&[
+            "plan", &world, "--from", "1,1", "--to=9,5", "--cell", "0.25"
+        ]),
+        api_ok(kinolab_js::legs_api::plan(
+            parse(WORLD),
+            [1.0, 1.0],
+            [9.0, 5.0],
+            0.25
+        )),
+        "plan"
+    );
+}
+
 fn api_ok(reply: api::Reply) -> Value {
     reply.unwrap()
 }

@@ -63,8 +63,10 @@ impl Verdict {
 
 /// Keys whose value may be `null` in an answer: "none" in the contract's
 /// sense (no time to goal, no ICR, no path), never a number that overflowed.
-pub const NULLABLE: [&str; 9] = [
+pub const NULLABLE: [&str; 11] = [
     "behaviour",
+    "margin",
+    "min_margin",
     "group",
     "control",
     "time_to_goal",

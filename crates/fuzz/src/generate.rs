@@ -8,7 +8,7 @@ use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
 use crate::seeds::Seeds;
 
 /// Every command the generators cover, with its share of the cases.
-pub const COMMANDS: [(&str, u32); 14] = [
+pub const COMMANDS: [(&str, u32); 17] = [
     ("leg-events", 2),
     ("stability", 4),
     ("analyze", 8),
@@ -22,6 +22,9 @@ pub const COMMANDS: [(&str, u32); 14] = [
     ("field", 10),
     ("run", 8),
     ("lessons", 6),
+    ("gait", 6),
+    ("cpg", 5),
+    ("plan", 6),
     ("usage", 4),
 ];
 
@@ -138,6 +141,35 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
             g.file_arg(&seeds.behaviour_runs, &[], "behaviours.run.json");
         }
         "lessons" => lessons_case(&mut g, seeds),
+        "gait" => {
+            g.file_arg(&seeds.gaits, &seeds.gait_ids, "walk.gait.json");
+            if g.dice.chance(0.4) {
+                let n = g.pick_text(&["1", "7", "100", "1000", "100000", "100001", "0", "-1"]);
+                g.option("--samples", &n);
+            }
+        }
+        "cpg" => {
+            g.file_arg(&seeds.cpgs, &[], "net.cpg.json");
+        }
+        "plan" => {
+            g.file_arg(&seeds.worlds, &seeds.world_ids, "map.world.json");
+            for option in ["--from", "--to"] {
+                if g.dice.chance(0.95) {
+                    let p = [g.dice.range(-1.0, 12.0), g.dice.range(-1.0, 8.0)];
+                    let text = if g.dice.chance(0.85) {
+                        format!("{:.2},{:.2}", p[0], p[1])
+                    } else {
+                        g.dice.numbers_text(2)
+                    };
+                    g.option(option, &text);
+                }
+            }
+            if g.dice.chance(0.95) {
+                let cell =
+                    g.pick_text(&["0.1", "0.25", "0.5", "1", "0.001", "0", "-1", "100", "1e-6"]);
+                g.option("--cell", &cell);
+            }
+        }
         _ => usage_case(&mut g),
     }
     g.case

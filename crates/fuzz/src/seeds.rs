@@ -14,10 +14,14 @@ pub struct Seeds {
     pub worlds: Vec<String>,
     pub behaviour_runs: Vec<String>,
     pub lessons: Vec<String>,
+    pub gaits: Vec<String>,
+    pub cpgs: Vec<String>,
     /// Catalogue ids, for `catalogue:<id>` arguments.
     pub robot_ids: Vec<String>,
     pub model_ids: Vec<String>,
     pub field_ids: Vec<String>,
+    pub gait_ids: Vec<String>,
+    pub world_ids: Vec<String>,
 }
 
 /// The workspace's root (for the example files kept in crates).
@@ -77,8 +81,19 @@ impl Seeds {
             worlds: kinolab_world::catalogue::WORLDS
                 .iter()
                 .map(|(_, text)| (*text).to_owned())
+                .chain([CONTRACT_WORLD.to_owned()])
                 .collect(),
             behaviour_runs: files_in(&root.join("crates/behaviours/runs"), ".run.json"),
+            gaits: kinolab_locomotion::named_ids()
+                .filter_map(kinolab_locomotion::named)
+                .map(|g| gait_json(&g))
+                .collect(),
+            cpgs: vec![CPG.to_owned()],
+            gait_ids: kinolab_locomotion::named_ids().map(str::to_owned).collect(),
+            world_ids: kinolab_world::catalogue::WORLDS
+                .iter()
+                .map(|(id, _)| (*id).to_owned())
+                .collect(),
             lessons: files_in(&root.join("lessons/05-behaviours"), ".md")
                 .into_iter()
                 .filter(|t| t.contains("objectives:"))
@@ -90,6 +105,32 @@ impl Seeds {
         }
     }
 }
+
+/// A gait as a gait file.
+fn gait_json(g: &kinolab_locomotion::Gait) -> String {
+    let legs: Vec<serde_json::Value> = g
+        .legs
+        .iter()
+        .map(|l| serde_json::json!({ "name": l.name, "x": l.x, "y": l.y, "phase": l.phase }))
+        .collect();
+    serde_json::json!({
+        "name": g.name, "duty_factor": g.duty_factor, "stride": g.stride,
+        "com": g.com, "legs": legs,
+    })
+    .to_string()
+}
+
+/// The contract's world example.
+const CONTRACT_WORLD: &str = r#"{ "name": "two-rooms", "bounds": [0.0, 0.0, 10.0, 6.0],
+  "robot_radius": 0.2, "obstacles": [
+    { "kind": "circle", "x": 3.0, "y": 3.0, "radius": 0.5 },
+    { "kind": "polygon", "points": [[5, 0], [5.2, 0], [5.2, 4], [5, 4]] },
+    { "kind": "wall", "from": [7, 2], "to": [7, 6], "thickness": 0.1 } ] }"#;
+
+/// The contract's CPG example.
+const CPG: &str = r#"{ "frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"],
+  "target_phases": [0.25, 0.75, 0.0, 0.5], "weight": 2.0,
+  "initial_deg": [0, 10, 20, 30], "dt": 0.001, "duration": 10.0 }"#;
 
 /// An open-loop run file (a plan instead of a controller).
 const OPEN_LOOP_RUN: &str = r#"{

@@ -21,6 +21,7 @@
 
 pub mod api;
 pub mod behaviour_api;
+pub mod legs_api;
 mod mechanism;
 pub mod mechanism_api;
 
@@ -251,4 +252,32 @@ pub fn run_behaviours(run: JsValue) -> Result<JsValue, JsError> {
 #[wasm_bindgen]
 pub fn catalogues() -> Result<JsValue, JsError> {
     to_js(behaviour_api::catalogues())
+}
+
+// ---------------------------------------------------------------- legs and plans
+
+/// What `kinolab gait` prints for a gait file (object or JSON text):
+/// `{ samples: [{ tau, stance, feet, margin }], min_margin, statically_stable }`.
+/// `samples` defaults to 100.
+#[wasm_bindgen]
+pub fn gait(file: JsValue, samples: Option<usize>) -> Result<JsValue, JsError> {
+    to_js(legs_api::gait(
+        from_js("gait", file)?,
+        samples.unwrap_or(100),
+    ))
+}
+
+/// What `kinolab cpg` prints for a CPG file: `{ final_deg, lag, locked }`.
+#[wasm_bindgen]
+pub fn cpg(file: JsValue) -> Result<JsValue, JsError> {
+    to_js(legs_api::cpg(from_js("cpg", file)?))
+}
+
+/// What `kinolab plan` prints: `{ cost, cells, points }` (`cost` null when
+/// no path), for a world file (object, JSON text, or `"catalogue:<id>"`).
+#[wasm_bindgen]
+pub fn plan(world: JsValue, from: JsValue, to: JsValue, cell: f64) -> Result<JsValue, JsError> {
+    let from: [f64; 2] = typed("from", from)?;
+    let to: [f64; 2] = typed("to", to)?;
+    to_js(legs_api::plan(from_js("world", world)?, from, to, cell))
 }

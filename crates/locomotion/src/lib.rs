@@ -1,16 +1,22 @@
 //! Legged locomotion, computed: how many ways legs can lift and land, when
-//! a standing robot is statically stable, and how efficiently anything moves.
+//! a standing robot is statically stable, how a periodic gait moves its
+//! feet and keeps (or loses) its balance through the cycle, how coupled
+//! oscillators settle into a gait, and how efficiently anything moves.
 //!
 //! The geometry is small and exact enough to write out: a monotone-chain
 //! convex hull and point-to-segment distances.
 
+pub mod cpg;
 mod error;
-mod gait;
+mod events;
+pub mod gait;
 pub mod report;
 mod stability;
 mod transport;
 
+pub use cpg::Cpg;
 pub use error::FieldError;
-pub use gait::{MAX_LEGS_EXACT, leg_events, leg_events_f64};
+pub use events::{MAX_LEGS_EXACT, leg_events, leg_events_f64};
+pub use gait::{Gait, Leg, named, named_ids};
 pub use stability::{Point, Stability, static_stability};
 pub use transport::{STANDARD_GRAVITY, cost_of_transport};

@@ -16,7 +16,7 @@ pub struct LegEventsReport {
 }
 
 pub fn leg_events(legs: u32) -> Result<LegEventsReport, FieldError> {
-    let exact = crate::gait::leg_events(legs)?;
+    let exact = crate::events::leg_events(legs)?;
     Ok(LegEventsReport {
         legs,
         events: exact.to_string(),
@@ -40,5 +40,89 @@ pub fn stability(com: Point, feet: &[Point]) -> Result<StabilityReport, FieldErr
         margin: s.margin,
         support_polygon: s.polygon,
         nearest_edge_point: s.nearest,
+    })
+}
+
+/// One sample of `kinolab gait`.
+#[derive(Debug, Clone, Serialize)]
+pub struct GaitSampleReport {
+    pub tau: f64,
+    pub stance: Vec<String>,
+    pub feet: Vec<Point>,
+    /// `None` (null) with no foot down: the margin is undefined.
+    pub margin: Option<f64>,
+}
+
+/// `kinolab gait`: the cycle sampled, its smallest margin, and whether it
+/// is statically stable.
+#[derive(Debug, Clone, Serialize)]
+pub struct GaitReport {
+    pub name: String,
+    pub samples: Vec<GaitSampleReport>,
+    /// `None` when some sample has no foot down.
+    pub min_margin: Option<f64>,
+    pub statically_stable: bool,
+    /// How far the body moves forward in one cycle time T: L/β, m (its
+    /// speed is L/(βT)).
+    pub body_speed_per_cycle: f64,
+}
+
+/// The most samples of one `kinolab gait`.
+pub const MAX_GAIT_SAMPLES: usize = 100_000;
+
+pub fn gait(g: &crate::Gait, samples: usize) -> Result<GaitReport, FieldError> {
+    g.check()?;
+    if samples == 0 || samples > MAX_GAIT_SAMPLES {
+        return Err(FieldError::new(
+            "samples",
+            format!("must be from 1 to {MAX_GAIT_SAMPLES}, got {samples}"),
+        ));
+    }
+    let instants = g.sample(samples);
+    let min_margin = crate::gait::min_margin(&instants);
+    Ok(GaitReport {
+        name: g.name.clone(),
+        samples: instants
+            .into_iter()
+            .map(|s| GaitSampleReport {
+                tau: s.tau,
+                stance: s.stance.iter().map(|&i| g.legs[i].name.clone()).collect(),
+                feet: s.feet,
+                margin: s.margin,
+            })
+            .collect(),
+        statically_stable: min_margin.is_some_and(|m| m > 0.0),
+        min_margin,
+        body_speed_per_cycle: g.stride / g.duty_factor,
+    })
+}
+
+/// `kinolab cpg`: where the oscillators ended and whether they locked.
+#[derive(Debug, Clone, Serialize)]
+pub struct CpgReport {
+    pub legs: Vec<String>,
+    /// θᵢ at `duration`, degrees, not wrapped.
+    pub final_deg: Vec<f64>,
+    /// ((θ₀ − θᵢ)/2π) mod 1.
+    pub lag: Vec<f64>,
+    /// The lags the coupling aims at: (φᵢ − φ₀) mod 1.
+    pub target_lag: Vec<f64>,
+    pub locked: bool,
+    pub steps: usize,
+}
+
+pub fn cpg(c: &crate::Cpg) -> Result<CpgReport, FieldError> {
+    let s = c.run()?;
+    Ok(CpgReport {
+        legs: c.legs.clone(),
+        final_deg: s.theta.iter().map(|t| t.to_degrees()).collect(),
+        lag: s.lag,
+        target_lag: c
+            .target_phases
+            .iter()
+            .map(|p| (p - c.target_phases[0]).rem_euclid(1.0))
+            .collect(),
+        locked: s.locked,
+        steps: s.steps,
     })
 }
