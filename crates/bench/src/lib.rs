@@ -55,6 +55,29 @@ fn stability() -> f64 {
         .map_or(f64::NAN, |s| s.margin)
 }
 
+/// One gait cycle sampled 100 times (the gait studio's and `kinolab
+/// gait`'s work): stance sets, feet and margins.
+fn gait_cycle() -> f64 {
+    let Some(gait) = kinolab_locomotion::named(black_box("hexapod-wave")) else {
+        return f64::NAN;
+    };
+    kinolab_locomotion::gait::min_margin(&gait.sample(100)).unwrap_or(f64::NAN)
+}
+
+/// The contract's CPG example: four oscillators for 10 s at dt = 1 ms.
+fn cpg_10s() -> f64 {
+    let cpg = kinolab_locomotion::Cpg {
+        frequency: 1.0,
+        legs: ["LF", "RF", "LH", "RH"].map(String::from).to_vec(),
+        target_phases: vec![0.25, 0.75, 0.0, 0.5],
+        weight: 2.0,
+        initial_deg: black_box(vec![0.0, 10.0, 20.0, 30.0]),
+        dt: 0.001,
+        duration: 10.0,
+    };
+    cpg.run().map_or(f64::NAN, |s| s.theta[0])
+}
+
 fn leg_events() -> f64 {
     kinolab_locomotion::leg_events(black_box(17)).map_or(f64::NAN, |n| n as f64)
 }
@@ -201,6 +224,14 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "mech_ik_panda_100_targets",
         run: mechanism::ik_panda_100,
+    },
+    Kernel {
+        name: "gait_cycle_100_samples",
+        run: gait_cycle,
+    },
+    Kernel {
+        name: "cpg_10s_1khz",
+        run: cpg_10s,
     },
     Kernel {
         name: "field_vector_8",

@@ -9,6 +9,7 @@
 pub mod cpg;
 mod error;
 mod events;
+pub mod exercise;
 pub mod gait;
 pub mod report;
 mod stability;

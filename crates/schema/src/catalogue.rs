@@ -94,6 +94,46 @@ pub static WIDGETS: &[WidgetSchema] = &[
         rules: None,
     },
     WidgetSchema {
+        name: "gait-studio",
+        summary: "a walker's feet through one gait cycle: support polygon, stability margin, footfall diagram",
+        params: &[
+            param(
+                "gait",
+                Kind::Choice {
+                    options: &[
+                        "quadruped-crawl",
+                        "quadruped-trot",
+                        "quadruped-pace",
+                        "quadruped-bound",
+                        "hexapod-tripod",
+                        "hexapod-wave",
+                        "hexapod-tetrapod",
+                    ],
+                },
+                Some("quadruped-crawl"),
+                "the named gait to start from",
+            ),
+            param(
+                "duty_factor",
+                Kind::Number {
+                    min: 0.05,
+                    max: 0.95,
+                },
+                None,
+                "the duty factor β to start with (the gait's own when left out)",
+            ),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["static-phases"],
+                },
+                None,
+                "a graded task: `static-phases` asks for lift-off phases that keep the walker statically stable at the given β (which is then fixed)",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
         name: "scripted-vs-sensing",
         summary: "a pick-and-place cell in a closed and an open world",
         params: &[param(

@@ -14,6 +14,7 @@ use crate::{autonomy, behaviour, control, fields, locomotion, mechanism, wheels}
 pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("leg-events", locomotion::leg_events::create),
     ("support-polygon", locomotion::support_polygon::create),
+    ("gait-studio", locomotion::gait_studio::create),
     ("scripted-vs-sensing", autonomy::scripted_vs_sensing::create),
     ("wheel-workbench", wheels::workbench::create),
     ("wheel-drive", wheels::drive::create),

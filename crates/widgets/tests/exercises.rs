@@ -90,3 +90,32 @@ fn the_layer_exercise_is_run_on_three_worlds() {
     h.run_steps(2);
     h.get_by_label_contains("Solved. All three worlds reached with no collision");
 }
+
+#[test]
+fn the_static_phases_exercise_wants_a_crawl_order() {
+    let mut h = harness(widget(
+        "gait-studio",
+        &[
+            ("gait", "quadruped-crawl"),
+            ("duty_factor", "0.8"),
+            ("task", "static-phases"),
+        ],
+    ));
+    h.run_steps(3);
+    // Every leg starts lifting at τ = 0: nothing stands then.
+    h.get_by_label("Check my phases").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Not yet: at τ =");
+    // The crawl's order: LH, LF, RH, RF a quarter of a cycle apart.
+    for (leg, phase) in [("φ LF", 0.25), ("φ RF", 0.75), ("φ LH", 0.0), ("φ RH", 0.5)] {
+        h.get_all_by_label(leg)
+            .next()
+            .unwrap()
+            .set_value_accesskit(phase);
+        h.run_steps(1);
+    }
+    h.run_steps(2);
+    h.get_by_label("Check my phases").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Solved. Statically stable through the whole cycle");
+}

@@ -1,0 +1,76 @@
+//! Graded exercises on gaits, checked by the core so the lab, a test and
+//! an instructor's script agree.
+
+use kinolab_common::Feedback;
+use kinolab_common::display::fixed;
+
+use crate::error::FieldError;
+use crate::gait::{Gait, min_margin};
+
+/// Samples over the cycle an answer is checked at.
+const CHECK_SAMPLES: usize = 720;
+
+/// "Find lift-off phases that keep this walker statically stable with duty
+/// factor `beta`": met when the gait keeps β and its margin stays positive
+/// at every checked instant.
+pub fn static_phases(gait: &Gait, beta: f64) -> Result<Feedback, FieldError> {
+    gait.check()?;
+    if (gait.duty_factor - beta).abs() > 1e-9 {
+        return Ok(Feedback::not_yet(format!(
+            "Keep the duty factor at β = {}: change only the phases.",
+            fixed(beta, 2)
+        )));
+    }
+    let instants = gait.sample(CHECK_SAMPLES);
+    if let Some(m) = min_margin(&instants).filter(|m| *m > 0.0) {
+        return Ok(Feedback::met(format!(
+            "Statically stable through the whole cycle: the smallest margin is {} cm.",
+            fixed(m * 100.0, 1)
+        )));
+    }
+    let worst = instants
+        .iter()
+        .min_by(|a, b| {
+            let m = |s: &crate::gait::Instant| s.margin.unwrap_or(f64::NEG_INFINITY);
+            m(a).total_cmp(&m(b))
+        })
+        .ok_or_else(|| FieldError::new("legs", "no instant to check"))?;
+    let down: Vec<&str> = worst
+        .stance
+        .iter()
+        .map(|&i| gait.legs[i].name.as_str())
+        .collect();
+    let margin = worst.margin.map_or("no foot is down".to_owned(), |m| {
+        format!("the margin is {} cm", fixed(m * 100.0, 1))
+    });
+    Ok(Feedback::not_yet(format!(
+        "Not yet: at τ = {} {margin} with {} down. Spread the lift-offs so that \
+         legs on the same side or the same diagonal do not swing together.",
+        fixed(worst.tau, 3),
+        if down.is_empty() {
+            "nothing".to_owned()
+        } else {
+            down.join(", ")
+        }
+    )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_crawl_order_passes_and_a_pace_order_fails() {
+        let mut g = crate::named("quadruped-crawl").unwrap();
+        g.duty_factor = 0.8;
+        assert!(static_phases(&g, 0.8).unwrap().met);
+        // LF and LH lifting together leave the CoM off the right-hand pair.
+        for (leg, phase) in g.legs.iter_mut().zip([0.0, 0.5, 0.0, 0.5]) {
+            leg.phase = phase;
+        }
+        let f = static_phases(&g, 0.8).unwrap();
+        assert!(!f.met && f.message.contains("τ ="), "{}", f.message);
+        g.duty_factor = 0.9;
+        assert!(static_phases(&g, 0.8).unwrap().message.contains("β = 0.80"));
+    }
+}
