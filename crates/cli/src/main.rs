@@ -186,12 +186,31 @@ enum Command {
         /// Cell side, m.
         #[arg(long, allow_hyphen_values = true)]
         cell: f64,
+        /// The search: `astar` (octile heuristic) or `dijkstra`; the same cost, different work (`expanded`).
+        #[arg(long, value_enum, default_value = "astar")]
+        algorithm: PlanAlgorithm,
     },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
         /// A lessons folder to check; the embedded lessons when omitted.
         dir: Option<PathBuf>,
     },
+}
+
+/// The searches `kinolab plan` offers.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+enum PlanAlgorithm {
+    Astar,
+    Dijkstra,
+}
+
+impl From<PlanAlgorithm> for kinolab_world::search::Algorithm {
+    fn from(a: PlanAlgorithm) -> Self {
+        match a {
+            PlanAlgorithm::Astar => Self::AStar,
+            PlanAlgorithm::Dijkstra => Self::Dijkstra,
+        }
+    }
 }
 
 /// A failure reported as one line on stderr.
@@ -317,7 +336,8 @@ fn run(command: Command) -> Result<Value, Failure> {
             from,
             to,
             cell,
-        } => plan::plan(&world, &from, &to, cell),
+            algorithm,
+        } => plan::plan(&world, &from, &to, cell, algorithm.into()),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

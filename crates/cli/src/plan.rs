@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use kinolab_world::grid::Grid;
+use kinolab_world::search::Algorithm;
 use kinolab_world::{Vec2, World};
 use serde_json::{Value, json};
 
@@ -18,14 +19,20 @@ fn load(path: &Path) -> Result<World, Failure> {
     .map_err(|e| Failure(format!("{shown}: {e}")))
 }
 
-pub(crate) fn plan(path: &Path, from: &str, to: &str, cell: f64) -> Result<Value, Failure> {
+pub(crate) fn plan(
+    path: &Path,
+    from: &str,
+    to: &str,
+    cell: f64,
+    algorithm: Algorithm,
+) -> Result<Value, Failure> {
     let world = load(path)?;
     let [fx, fy] = point("from", from)?;
     let [tx, ty] = point("to", to)?;
     let grid = Grid::new(&world, cell, world.robot_radius)
         .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)))?;
     let path = grid
-        .plan(Vec2::new(fx, fy), Vec2::new(tx, ty))
+        .plan(Vec2::new(fx, fy), Vec2::new(tx, ty), algorithm)
         .map_err(|e| Failure(format!("--{}: {}", e.field, e.message)))?;
     match path {
         Some(p) => emit("plan", &p),

@@ -793,6 +793,21 @@ fn plan_follows_the_contract() {
     }
     assert!((v["cost"].as_f64().unwrap() - cost).abs() < 1e-9);
     assert_eq!(v["points"][0], serde_json::json!([1.25, 1.25]));
+    // Dijkstra finds the same cost with more work.
+    let d = ok(&[
+        "plan",
+        &path,
+        "--from",
+        "1,1",
+        "--to",
+        "9,5",
+        "--cell",
+        "0.5",
+        "--algorithm",
+        "dijkstra",
+    ]);
+    assert!((d["cost"].as_f64().unwrap() - v["cost"].as_f64().unwrap()).abs() < 1e-12);
+    assert!(d["expanded"].as_u64().unwrap() > v["expanded"].as_u64().unwrap());
     // Walled in: no path, exit 0 and a null cost.
     let boxed = robot_file(
         "boxed.world.json",

@@ -36,7 +36,11 @@ pub fn plan(world: Value, from: [f64; 2], to: [f64; 2], cell: f64) -> Reply {
     .map_err(text)?;
     let grid = kinolab_world::grid::Grid::new(&world, cell, world.robot_radius).map_err(text)?;
     let path = grid
-        .plan(Vec2::new(from[0], from[1]), Vec2::new(to[0], to[1]))
+        .plan(
+            Vec2::new(from[0], from[1]),
+            Vec2::new(to[0], to[1]),
+            kinolab_world::search::Algorithm::AStar,
+        )
         .map_err(text)?;
     match path {
         Some(p) => reply(&p),

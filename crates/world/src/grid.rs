@@ -5,7 +5,9 @@
 //! neighbours: straight ones cost s, diagonal ones s√2 and only when both
 //! cells they cut past are free. One Dijkstra sweep from the goal gives
 //! every cell its distance to go (a wavefront navigation function with no
-//! local minima), and descending it from any start gives a shortest path.
+//! local minima), and descending it from any start gives a shortest path;
+//! a single start-to-goal path comes from [`crate::search`] (Dijkstra or
+//! A*, with the cells each expanded).
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -37,6 +39,8 @@ pub struct GridPath {
     pub cost: f64,
     pub cells: Vec<[usize; 2]>,
     pub points: Vec<[f64; 2]>,
+    /// How many cells the search expanded on the way.
+    pub expanded: usize,
 }
 
 const STEPS: [(isize, isize); 8] = [
@@ -188,7 +192,12 @@ impl Grid {
     /// The shortest path from `from` to `to`; `Ok(None)` when there is none.
     /// A point outside the bounds or in an occupied cell is an error naming
     /// `from` or `to`.
-    pub fn plan(&self, from: Vec2, to: Vec2) -> Result<Option<GridPath>, FieldError> {
+    pub fn plan(
+        &self,
+        from: Vec2,
+        to: Vec2,
+        algorithm: crate::search::Algorithm,
+    ) -> Result<Option<GridPath>, FieldError> {
         let cell = |p: Vec2, field: &str| -> Result<Cell, FieldError> {
             let c = self.cell_of(p).ok_or_else(|| {
                 FieldError::new(field, format!("({}, {}) is outside the bounds", p.x, p.y))
@@ -203,24 +212,24 @@ impl Grid {
             }
         };
         let (start, goal) = (cell(from, "from")?, cell(to, "to")?);
-        let dist = self.distances_to(goal);
-        let Some(cells) = self.descend(&dist, start) else {
-            return Ok(None);
-        };
-        Ok(Some(GridPath {
-            cost: dist[self.index(start)],
-            points: cells
+        let found = self.search(start, goal, algorithm);
+        let expanded = found.expanded.len();
+        Ok(found.cost.map(|cost| GridPath {
+            expanded,
+            cost,
+            points: found
+                .path
                 .iter()
                 .map(|&c| self.centre(c))
                 .map(|p| [p.x, p.y])
                 .collect(),
-            cells: cells.iter().map(|&(i, j)| [i, j]).collect(),
+            cells: found.path.iter().map(|&(i, j)| [i, j]).collect(),
         }))
     }
 }
 
 /// A queue entry ordered so the heap pops the smallest distance first.
-struct Entry(f64, Cell);
+pub(crate) struct Entry(pub(crate) f64, pub(crate) Cell);
 
 impl PartialEq for Entry {
     fn eq(&self, other: &Self) -> bool {
@@ -249,6 +258,7 @@ impl Ord for Entry {
 mod tests {
     use super::*;
     use crate::obstacle::{Obstacle, Shape};
+    use crate::search::Algorithm;
 
     #[test]
     fn an_empty_room_costs_the_octile_distance() {
@@ -256,7 +266,7 @@ mod tests {
         let grid = Grid::new(&world, 1.0, 0.2).unwrap();
         assert_eq!((grid.nx, grid.ny), (10, 6));
         let path = grid
-            .plan(Vec2::new(0.5, 0.5), Vec2::new(9.5, 3.5))
+            .plan(Vec2::new(0.5, 0.5), Vec2::new(9.5, 3.5), Algorithm::AStar)
             .unwrap()
             .unwrap();
         // 9 across and 3 up: 3 diagonal steps and 6 straight ones.
@@ -275,10 +285,18 @@ mod tests {
         }));
         let grid = Grid::new(&world, 1.0, 0.2).unwrap();
         let start = Vec2::new(0.5, 0.5);
-        assert_eq!(grid.plan(start, Vec2::new(4.5, 0.5)).unwrap(), None);
-        let e = grid.plan(start, Vec2::new(2.5, 1.5)).unwrap_err();
+        assert_eq!(
+            grid.plan(start, Vec2::new(4.5, 0.5), Algorithm::AStar)
+                .unwrap(),
+            None
+        );
+        let e = grid
+            .plan(start, Vec2::new(2.5, 1.5), Algorithm::AStar)
+            .unwrap_err();
         assert_eq!(e.field, "to");
-        let e = grid.plan(Vec2::new(-1.0, 0.5), start).unwrap_err();
+        let e = grid
+            .plan(Vec2::new(-1.0, 0.5), start, Algorithm::AStar)
+            .unwrap_err();
         assert_eq!(e.field, "from");
         // One blocked cell at (1, 1): every diagonal from (0, 0) towards
         // (2, 2) cuts past it, so the path goes round the edge: 4 straight steps.
@@ -287,7 +305,7 @@ mod tests {
         })
         .unwrap();
         let path = g
-            .plan(Vec2::new(0.5, 0.5), Vec2::new(2.5, 2.5))
+            .plan(Vec2::new(0.5, 0.5), Vec2::new(2.5, 2.5), Algorithm::AStar)
             .unwrap()
             .unwrap();
         assert!((path.cost - 4.0).abs() < 1e-12, "{}", path.cost);

@@ -20,6 +20,7 @@ pub mod catalogue;
 mod file;
 pub mod grid;
 pub mod obstacle;
+pub mod search;
 pub mod sensors;
 mod sim;
 mod world;

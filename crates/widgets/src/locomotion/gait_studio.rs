@@ -335,8 +335,8 @@ fn cycle_view(
         weak,
     );
     painter.text(
-        Pos2::new(plot.left() + 4.0, plot.top()),
-        Align2::LEFT_TOP,
+        Pos2::new(plot.right() - 4.0, plot.bottom()),
+        Align2::RIGHT_BOTTOM,
         format!("margin S, ±{} cm", fixed(span * 100.0, 1)),
         FontId::proportional(10.0),
         weak,
