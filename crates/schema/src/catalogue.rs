@@ -134,6 +134,34 @@ pub static WIDGETS: &[WidgetSchema] = &[
         rules: None,
     },
     WidgetSchema {
+        name: "grid-planner",
+        summary: "a world as an occupancy grid; Dijkstra and A* expanding it cell by cell",
+        params: &[
+            param(
+                "world",
+                Kind::Choice {
+                    options: &[
+                        "two-rooms",
+                        "scattered",
+                        "u-trap",
+                        "corridor",
+                        "lights",
+                        "crossing",
+                    ],
+                },
+                Some("two-rooms"),
+                "one of the lab's example worlds",
+            ),
+            param(
+                "cell",
+                Kind::Number { min: 0.1, max: 1.0 },
+                Some("0.25"),
+                "the cell side s to start with (m)",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
         name: "scripted-vs-sensing",
         summary: "a pick-and-place cell in a closed and an open world",
         params: &[param(

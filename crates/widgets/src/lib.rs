@@ -22,6 +22,7 @@
 //! Nothing here knows about windows or browsers: the lab's shell
 //! (`kinolab-app`) hosts these widgets, as egui's demo app hosts its demos.
 
+pub mod architecture;
 pub mod autonomy;
 pub mod behaviour;
 pub mod control;

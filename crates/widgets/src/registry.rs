@@ -8,13 +8,14 @@
 use kinolab_lessons::WidgetSpec;
 
 use crate::widget::{Constructor, LabWidget};
-use crate::{autonomy, behaviour, control, fields, locomotion, mechanism, wheels};
+use crate::{architecture, autonomy, behaviour, control, fields, locomotion, mechanism, wheels};
 
 /// Every widget's constructor, by its schema name.
 pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("leg-events", locomotion::leg_events::create),
     ("support-polygon", locomotion::support_polygon::create),
     ("gait-studio", locomotion::gait_studio::create),
+    ("grid-planner", architecture::grid_planner::create),
     ("scripted-vs-sensing", autonomy::scripted_vs_sensing::create),
     ("wheel-workbench", wheels::workbench::create),
     ("wheel-drive", wheels::drive::create),

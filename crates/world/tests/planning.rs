@@ -1,3 +1,4 @@
+#![allow(clippy::unwrap_used)] // tests may stop at the first surprise
 //! Grid planning against brute force: on random grids Dijkstra and A* find
 //! the true shortest 8-connected distance (no corner cutting), agree with
 //! each other, and A* expands no more cells.

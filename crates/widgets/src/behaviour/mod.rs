@@ -4,4 +4,4 @@
 pub mod arena;
 pub mod braitenberg;
 pub mod frog;
-mod world_view;
+pub(crate) mod world_view;
