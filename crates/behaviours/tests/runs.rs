@@ -57,7 +57,10 @@ proptest! {
     #[test]
     fn fear_and_aggression(side in prop_oneof![Just(1.0), Just(-1.0)], angle in 0.2f64..0.9, distance in 1.5f64..3.0) {
         let bearing = side * angle;
-        let fear = track(&mut vehicle(Character::Fear, bearing, distance), 300);
+        // From far off and nearly ahead the weak stimulus turns 2a only
+        // slowly: it first closes in, then turns and leaves (600 steps is
+        // 30 s; 300 were too few for a light 3 m away at 0.2 rad).
+        let fear = track(&mut vehicle(Character::Fear, bearing, distance), 600);
         let (d_end, b_end, v_end) = fear[fear.len() - 1];
         prop_assert!(d_end > distance, "2a ends farther than it started: {d_end}");
         prop_assert!(b_end.abs() > std::f64::consts::FRAC_PI_2, "2a ends with the light behind it");
