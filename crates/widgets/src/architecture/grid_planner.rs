@@ -219,13 +219,14 @@ impl LabWidget for GridPlanner {
         let rect = response.rect;
         painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let view = PlaneView::fit(rect.shrink(8.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
+        // The world first (it paints the floor), the grid and search over it.
+        draw_world(ui, &painter, &view, &self.world, 0.0);
         let searches = self.searches();
         if let (Some((d, a)), Some(grid)) = (&searches, self.grid().cloned()) {
             let search = if self.setup.astar { a } else { d };
             let shown = self.shown.map_or(usize::MAX, |s| s as usize);
             draw_search(ui, &painter, &view, &grid, search, shown);
         }
-        draw_world(ui, &painter, &view, &self.world, 0.0);
         let clamp = |p: [f64; 2]| {
             [
                 p[0].clamp(b.x_min, b.x_max - 1e-6),
