@@ -80,29 +80,7 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
         "analyze" => {
             g.file_arg(&seeds.robots, &seeds.robot_ids, "robot.json");
         }
-        "drive" => {
-            g.file_arg(&seeds.robots, &seeds.robot_ids, "robot.json");
-            match g.dice.below(5) {
-                0 | 1 => g.option_numbers("--twist", 3),
-                2 | 3 => {
-                    let n = g.dice.below(7);
-                    let spins: Vec<String> = (0..n)
-                        .map(|_| {
-                            if g.dice.chance(0.2) {
-                                "-".to_owned()
-                            } else {
-                                format_number(g.dice.number())
-                            }
-                        })
-                        .collect();
-                    g.option("--wheels", &spins.join(","));
-                }
-                _ => {}
-            }
-            if g.dice.chance(0.3) {
-                g.option_numbers("--theta", 1);
-            }
-        }
+        "drive" => drive_case(&mut g, seeds),
         "robots" => {
             if g.dice.chance(0.7) {
                 let id = if g.dice.chance(0.8) {
@@ -116,21 +94,7 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
         "simulate" => {
             g.file_arg(&seeds.control_runs, &[], "run.json");
         }
-        "batch" => {
-            g.file_arg(&seeds.control_runs, &[], "run.json");
-            for (option, count) in [("--radius", 1), ("--heading-deg", 1)] {
-                if g.dice.chance(0.5) {
-                    g.option_numbers(option, count);
-                }
-            }
-            if g.dice.chance(0.6) {
-                let count = g.pick_text(&["1", "4", "16", "100", "1000", "1001", "0", "-3", "1e3"]);
-                g.option("--count", &count);
-            }
-            if g.dice.chance(0.3) {
-                g.flag("--paths");
-            }
-        }
+        "batch" => batch_case(&mut g, seeds),
         "gains" => {
             let text = g.dice.numbers_text(3);
             g.arg(&text);
@@ -141,35 +105,11 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
             g.file_arg(&seeds.behaviour_runs, &[], "behaviours.run.json");
         }
         "lessons" => lessons_case(&mut g, seeds),
-        "gait" => {
-            g.file_arg(&seeds.gaits, &seeds.gait_ids, "walk.gait.json");
-            if g.dice.chance(0.4) {
-                let n = g.pick_text(&["1", "7", "100", "1000", "100000", "100001", "0", "-1"]);
-                g.option("--samples", &n);
-            }
-        }
+        "gait" => gait_case(&mut g, seeds),
         "cpg" => {
             g.file_arg(&seeds.cpgs, &[], "net.cpg.json");
         }
-        "plan" => {
-            g.file_arg(&seeds.worlds, &seeds.world_ids, "map.world.json");
-            for option in ["--from", "--to"] {
-                if g.dice.chance(0.95) {
-                    let p = [g.dice.range(-1.0, 12.0), g.dice.range(-1.0, 8.0)];
-                    let text = if g.dice.chance(0.85) {
-                        format!("{:.2},{:.2}", p[0], p[1])
-                    } else {
-                        g.dice.numbers_text(2)
-                    };
-                    g.option(option, &text);
-                }
-            }
-            if g.dice.chance(0.95) {
-                let cell =
-                    g.pick_text(&["0.1", "0.25", "0.5", "1", "0.001", "0", "-1", "100", "1e-6"]);
-                g.option("--cell", &cell);
-            }
-        }
+        "plan" => plan_case(&mut g, seeds),
         _ => usage_case(&mut g),
     }
     g.case
@@ -293,6 +233,77 @@ impl Gen<'_> {
                 self.arg(name);
             }
         }
+    }
+}
+
+/// A robot and a twist, spins (`-` for unknown) or neither.
+fn drive_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    g.file_arg(&seeds.robots, &seeds.robot_ids, "robot.json");
+    match g.dice.below(5) {
+        0 | 1 => g.option_numbers("--twist", 3),
+        2 | 3 => {
+            let n = g.dice.below(7);
+            let spins: Vec<String> = (0..n)
+                .map(|_| {
+                    if g.dice.chance(0.2) {
+                        "-".to_owned()
+                    } else {
+                        format_number(g.dice.number())
+                    }
+                })
+                .collect();
+            g.option("--wheels", &spins.join(","));
+        }
+        _ => {}
+    }
+    if g.dice.chance(0.3) {
+        g.option_numbers("--theta", 1);
+    }
+}
+
+/// A run file and the circle of starts, sometimes with paths.
+fn batch_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    g.file_arg(&seeds.control_runs, &[], "run.json");
+    for (option, count) in [("--radius", 1), ("--heading-deg", 1)] {
+        if g.dice.chance(0.5) {
+            g.option_numbers(option, count);
+        }
+    }
+    if g.dice.chance(0.6) {
+        let count = g.pick_text(&["1", "4", "16", "100", "1000", "1001", "0", "-3", "1e3"]);
+        g.option("--count", &count);
+    }
+    if g.dice.chance(0.3) {
+        g.flag("--paths");
+    }
+}
+
+/// A gait and sometimes a sample count.
+fn gait_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    g.file_arg(&seeds.gaits, &seeds.gait_ids, "walk.gait.json");
+    if g.dice.chance(0.4) {
+        let n = g.pick_text(&["1", "7", "100", "1000", "100000", "100001", "0", "-1"]);
+        g.option("--samples", &n);
+    }
+}
+
+/// A world, two points (usually inside it) and a cell size.
+fn plan_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    g.file_arg(&seeds.worlds, &seeds.world_ids, "map.world.json");
+    for option in ["--from", "--to"] {
+        if g.dice.chance(0.95) {
+            let p = [g.dice.range(-1.0, 12.0), g.dice.range(-1.0, 8.0)];
+            let text = if g.dice.chance(0.85) {
+                format!("{:.2},{:.2}", p[0], p[1])
+            } else {
+                g.dice.numbers_text(2)
+            };
+            g.option(option, &text);
+        }
+    }
+    if g.dice.chance(0.95) {
+        let cell = g.pick_text(&["0.1", "0.25", "0.5", "1", "0.001", "0", "-1", "100", "1e-6"]);
+        g.option("--cell", &cell);
     }
 }
 
