@@ -8,6 +8,7 @@
 
 use std::hint::black_box;
 
+pub mod architecture;
 pub mod behaviour;
 pub mod mechanism;
 #[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
@@ -250,6 +251,14 @@ pub const KERNELS: &[Kernel] = &[
         run: behaviour::world_step,
     },
     Kernel {
+        name: "astar_200x200",
+        run: architecture::astar_200,
+    },
+    Kernel {
+        name: "architecture_arena_frame_3_robots",
+        run: architecture::arena_frame,
+    },
+    Kernel {
         name: "arena_frame_100_robots",
         run: behaviour::arena_frame,
     },
@@ -328,6 +337,14 @@ mod tests {
             path > 1.25f64.sqrt() && path < 2.0 * 1.25f64.sqrt(),
             "{path}"
         );
+        // The maze path winds: longer than the diagonal, as long as
+        // Dijkstra's.
+        let astar = run_named("astar_200x200", 1);
+        assert!(astar > 199.0 * 0.05 * 2f64.sqrt() + 1.0, "{astar}");
+        // The arena's clock advances one 50 ms step a frame.
+        let t0 = run_named("architecture_arena_frame_3_robots", 1);
+        let t1 = run_named("architecture_arena_frame_3_robots", 1);
+        assert!((t1 - t0 - 0.05).abs() < 1e-9 || t1 < t0, "{t0} → {t1}");
         // The scripted robot grasps a part within 1 cm of a 3 cm scatter:
         // p = (1/3)² ≈ 0.11, so about 11 of 100 (binomial σ ≈ 3.1).
         let grasped = run_named("pick_cell_100_parts", 1);

@@ -190,6 +190,29 @@ enum Command {
         #[arg(long, value_enum, default_value = "astar")]
         algorithm: PlanAlgorithm,
     },
+    /// Run one architecture (hierarchical, reactive or hybrid) through a world with scripted surprises; print its trajectory, events and scores.
+    Arena {
+        /// A world file with a start and a goal, or `catalogue:<id>`.
+        world: PathBuf,
+        /// `hierarchical`, `reactive` or `hybrid`.
+        #[arg(long)]
+        architecture: String,
+        /// A surprise, repeatable: `door:X0,Y0,X1,Y1@T`, `person:X0,Y0,X1,Y1@SPEED`, `wrong-map:I[,J…]`, `noise:SD`, `goal:X,Y@T`, `glass:X0,Y0,X1,Y1`.
+        #[arg(long, allow_hyphen_values = true)]
+        perturb: Vec<String>,
+        /// Simulated planning time per expanded cell, ms.
+        #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+        planning_cost: f64,
+        /// Seconds to run at most.
+        #[arg(long, default_value_t = 120.0, allow_hyphen_values = true)]
+        duration: f64,
+        /// Seed for the sensor noise.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// Keep one sample in this many steps (of 50 ms).
+        #[arg(long, default_value_t = 1)]
+        every: usize,
+    },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
         /// A lessons folder to check; the embedded lessons when omitted.
@@ -338,6 +361,25 @@ fn run(command: Command) -> Result<Value, Failure> {
             cell,
             algorithm,
         } => plan::plan(&world, &from, &to, cell, algorithm.into()),
+        Command::Arena {
+            world,
+            architecture,
+            perturb,
+            planning_cost,
+            duration,
+            seed,
+            every,
+        } => plan::arena(
+            &world,
+            &kinolab_architectures::run::Request {
+                architecture,
+                perturb,
+                planning_cost_ms: planning_cost,
+                duration,
+                seed,
+                every,
+            },
+        ),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

@@ -1,4 +1,5 @@
-//! `kinolab plan`: the shortest path across a world's occupancy grid.
+//! `kinolab plan`: the shortest path across a world's occupancy grid;
+//! `kinolab arena`: one architecture's run through a world with surprises.
 
 use std::path::Path;
 
@@ -10,7 +11,7 @@ use serde_json::{Value, json};
 use crate::{Failure, input, point, report as emit};
 
 /// A world file, or `catalogue:<id>` for one of the lab's worlds.
-fn load(path: &Path) -> Result<World, Failure> {
+pub(crate) fn load(path: &Path) -> Result<World, Failure> {
     let shown = path.display().to_string();
     match shown.strip_prefix("catalogue:") {
         Some(id) => kinolab_world::catalogue::world(id),
@@ -38,4 +39,16 @@ pub(crate) fn plan(
         Some(p) => emit("plan", &p),
         None => Ok(json!({ "cost": null, "cells": [], "points": [] })),
     }
+}
+
+/// `kinolab arena`.
+pub(crate) fn arena(
+    world: &Path,
+    request: &kinolab_architectures::run::Request,
+) -> Result<Value, Failure> {
+    let report = request.run(load(world)?).map_err(|e| {
+        let field = e.field.replace('_', "-");
+        Failure(format!("--{field}: {}", e.message))
+    })?;
+    emit("arena", &report)
 }

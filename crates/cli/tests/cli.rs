@@ -837,3 +837,81 @@ fn plan_follows_the_contract() {
         "--cell:",
     );
 }
+
+#[test]
+fn arena_runs_each_architecture_and_scores_it() {
+    let base = ["arena", "catalogue:office", "--every", "10"];
+    let mut scores = Vec::new();
+    for kind in ["hierarchical", "reactive", "hybrid"] {
+        let mut args = base.to_vec();
+        args.extend(["--architecture", kind, "--perturb", "glass:8.2,0,8.2,3.2"]);
+        let v = ok(&args);
+        assert_eq!(v["architecture"], kind);
+        assert_eq!(v["surprises"][0]["kind"], "glass");
+        let samples = v["samples"].as_array().unwrap();
+        assert_eq!(samples[0]["x"], 1.0);
+        // Samples every 10 steps of 50 ms.
+        assert!((samples[1]["t"].as_f64().unwrap() - 0.5).abs() < 1e-9);
+        let m = &v["metrics"];
+        // Every bump is an event and a collision.
+        let bumps = v["events"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|e| e["kind"] == "bump")
+            .count();
+        assert_eq!(m["collisions"].as_u64().unwrap() as usize, bumps);
+        scores.push((
+            m["reached"].as_bool().unwrap(),
+            m["replans"].as_u64().unwrap(),
+        ));
+    }
+    // The window: the robots with a model get round the glass, the reactive one does not.
+    assert_eq!(
+        scores.iter().map(|s| s.0).collect::<Vec<_>>(),
+        [true, false, true]
+    );
+    assert_eq!(scores[1].1, 0);
+    fails_with(
+        &[
+            "arena",
+            "catalogue:office",
+            "--architecture",
+            "deliberative",
+        ],
+        "--architecture",
+    );
+    fails_with(
+        &[
+            "arena",
+            "catalogue:office",
+            "--architecture",
+            "hybrid",
+            "--perturb",
+            "door:1,1@2",
+        ],
+        "--perturb[0]",
+    );
+    fails_with(
+        &[
+            "arena",
+            "catalogue:office",
+            "--architecture",
+            "hybrid",
+            "--planning-cost",
+            "nan",
+        ],
+        "--planning-cost",
+    );
+    fails_with(
+        &[
+            "arena",
+            "catalogue:office",
+            "--architecture",
+            "hybrid",
+            "--duration",
+            "1e9",
+        ],
+        "--duration",
+    );
+}

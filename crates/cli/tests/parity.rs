@@ -276,6 +276,30 @@ fn gait_cpg_and_plan_reports_match() {
         )),
         "plan"
     );
+    assert_same!(
+        cli(&[
+            "arena",
+            "catalogue:office",
+            "--architecture",
+            "hybrid",
+            "--perturb",
+            "person:6.3,5.6,6.3,2.0@0.6",
+            "--perturb",
+            "noise:0.1",
+            "--planning-cost",
+            "3",
+            "--seed",
+            "4",
+            "--every",
+            "20"
+        ]),
+        api_ok(kinolab_js::architecture_api::arena(
+            Value::String("catalogue:office".into()),
+            serde_json::json!({ "architecture": "hybrid", "perturb": ["person:6.3,5.6,6.3,2.0@0.6", "noise:0.1"],
+                                "planning_cost_ms": 3, "seed": 4, "every": 20 })
+        )),
+        "arena"
+    );
 }
 
 fn api_ok(reply: api::Reply) -> Value {

@@ -218,12 +218,20 @@ pub fn one_line(message: &str) -> String {
 /// Read JSON text into `T`. A problem names the JSON path of the value
 /// (`wheels[2].gamma_deg`) and keeps serde's line and column, so syntax
 /// errors can be found too.
+#[cfg(feature = "paths")]
 pub fn from_json<T: DeserializeOwned>(text: &str) -> Result<T, FieldError> {
     let de = &mut serde_json::Deserializer::from_str(text);
     serde_path_to_error::deserialize(de).map_err(|e| {
         let field = readable_path(&e.path().to_string());
         FieldError::new(field, plain_types(&e.into_inner().to_string()))
     })
+}
+
+/// Read JSON text into `T`; without the `paths` feature a problem keeps
+/// serde's line and column but not the path.
+#[cfg(not(feature = "paths"))]
+pub fn from_json<T: DeserializeOwned>(text: &str) -> Result<T, FieldError> {
+    serde_json::from_str(text).map_err(|e| FieldError::new("", plain_types(&e.to_string())))
 }
 
 /// serde's type names in words a file's author knows: "expected struct
@@ -267,6 +275,7 @@ fn plain_types(message: &str) -> String {
 
 /// A JSON path as a person reads it: no `.` for the whole document and no
 /// `?` where the path could not be followed (inside an untagged value).
+#[cfg(feature = "paths")]
 fn readable_path(path: &str) -> String {
     let mut out = String::new();
     for part in path.split('.').filter(|p| !p.is_empty() && *p != "?") {
@@ -298,6 +307,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "paths")]
     fn json_errors_name_the_path_and_the_position() {
         let e = from_json::<Robot>(r#"{"wheels": [{"radius": 1}, {"radius": "x"}]}"#).unwrap_err();
         assert_eq!(e.field, "wheels[1].radius");
@@ -317,6 +327,11 @@ mod tests {
         assert!(line.ends_with("… expected `fixed`"), "{line}");
         assert!(one_line("a `key\nwith a newline`").ends_with("`key\\nwith a newline`"));
         assert!(one_line(&"y".repeat(5000)).chars().count() <= 401);
+    }
+
+    #[test]
+    #[cfg(feature = "paths")]
+    fn paths_read_as_a_person_reads_them() {
         assert_eq!(readable_path("."), "");
         assert_eq!(readable_path("wheels[0].?.kind"), "wheels[0].kind");
         assert_eq!(readable_path("?.x"), "x");

@@ -63,7 +63,7 @@ impl Verdict {
 
 /// Keys whose value may be `null` in an answer: "none" in the contract's
 /// sense (no time to goal, no ICR, no path), never a number that overflowed.
-pub const NULLABLE: [&str; 11] = [
+pub const NULLABLE: [&str; 13] = [
     "behaviour",
     "margin",
     "min_margin",
@@ -75,6 +75,8 @@ pub const NULLABLE: [&str; 11] = [
     "cost",
     "wheels",
     "time",
+    "model_age_mean",
+    "model_age_max",
 ];
 
 /// The longest error line, in characters.

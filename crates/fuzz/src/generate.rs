@@ -8,7 +8,7 @@ use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
 use crate::seeds::Seeds;
 
 /// Every command the generators cover, with its share of the cases.
-pub const COMMANDS: [(&str, u32); 17] = [
+pub const COMMANDS: [(&str, u32); 18] = [
     ("leg-events", 2),
     ("stability", 4),
     ("analyze", 8),
@@ -25,6 +25,7 @@ pub const COMMANDS: [(&str, u32); 17] = [
     ("gait", 6),
     ("cpg", 5),
     ("plan", 6),
+    ("arena", 3),
     ("usage", 4),
 ];
 
@@ -110,6 +111,7 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
             g.file_arg(&seeds.cpgs, &[], "net.cpg.json");
         }
         "plan" => plan_case(&mut g, seeds),
+        "arena" => arena_case(&mut g, seeds),
         _ => usage_case(&mut g),
     }
     g.case
@@ -304,6 +306,40 @@ fn plan_case(g: &mut Gen<'_>, seeds: &Seeds) {
     if g.dice.chance(0.95) {
         let cell = g.pick_text(&["0.1", "0.25", "0.5", "1", "0.001", "0", "-1", "100", "1e-6"]);
         g.option("--cell", &cell);
+    }
+}
+
+/// A world, an architecture, a few surprises (some broken) and short runs.
+fn arena_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    g.file_arg(&seeds.worlds, &seeds.world_ids, "arena.world.json");
+    if g.dice.chance(0.95) {
+        let kind = g.pick_text(&["hierarchical", "reactive", "hybrid", "deliberative", ""]);
+        g.option("--architecture", &kind);
+    }
+    for _ in 0..g.dice.below(3) {
+        let spec = g.pick_text(&[
+            "door:5,1,5,2@6",
+            "person:6.3,5.6,6.3,2.0@0.6",
+            "wrong-map:0",
+            "wrong-map:99",
+            "noise:0.15",
+            "noise:5",
+            "goal:9,5@3",
+            "glass:8.2,0,8.2,3.2",
+            "glass:-50,0,1,1",
+            "door:1,1@2",
+            "teleport:1,1",
+            "person:1,1,2,2@0",
+        ]);
+        g.option("--perturb", &spec);
+    }
+    let cost = g.pick_text(&["0", "2", "20", "1000", "-1", "nan", "1e308"]);
+    g.option("--planning-cost", &cost);
+    let duration = g.pick_text(&["3", "8", "0", "-3", "1e9", "nan"]);
+    g.option("--duration", &duration);
+    if g.dice.chance(0.5) {
+        let every = g.pick_text(&["1", "10", "0", "1000000"]);
+        g.option("--every", &every);
     }
 }
 

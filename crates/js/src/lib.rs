@@ -20,6 +20,7 @@
 //! whose message names the field.
 
 pub mod api;
+pub mod architecture_api;
 pub mod behaviour_api;
 pub mod legs_api;
 mod mechanism;
@@ -280,4 +281,23 @@ pub fn plan(world: JsValue, from: JsValue, to: JsValue, cell: f64) -> Result<JsV
     let from: [f64; 2] = typed("from", from)?;
     let to: [f64; 2] = typed("to", to)?;
     to_js(legs_api::plan(from_js("world", world)?, from, to, cell))
+}
+
+// ---------------------------------------------------------------- architectures
+
+/// What `kinolab arena` prints: `{ architecture, surprises, samples, events,
+/// metrics }` for a world (object, JSON text, or `"catalogue:<id>"`) and
+/// `{ architecture, perturb?, planning_cost_ms?, duration?, seed?, every? }`.
+#[wasm_bindgen]
+pub fn arena(world: JsValue, options: JsValue) -> Result<JsValue, JsError> {
+    to_js(architecture_api::arena(
+        from_js("world", world)?,
+        from_js("options", options)?,
+    ))
+}
+
+/// Sensing routes: `{ routes, paradigm }` for `feeds[sensor][function]`.
+#[wasm_bindgen]
+pub fn routes(feeds: JsValue) -> Result<JsValue, JsError> {
+    to_js(architecture_api::routes(from_js("feeds", feeds)?))
 }

@@ -204,3 +204,25 @@ fn fields_and_behaviours_through_the_js_api() {
     let bad = kinolab_js::field_minima(JsValue::from_str("catalogue:nowhere"), JsValue::NULL);
     assert!(bad.is_err());
 }
+
+#[wasm_bindgen_test]
+fn the_architecture_arena_through_the_js_api() {
+    let world = JsValue::from_str("catalogue:office");
+    let options =
+        parse(r#"{ "architecture": "reactive", "perturb": ["glass:8.2,0,8.2,3.2"], "every": 50 }"#);
+    let r = kinolab_js::arena(world.clone(), options).unwrap();
+    let m = get(&r, "metrics");
+    // The fly at the window: no plan, no way round the glass.
+    assert_eq!(get(&m, "reached").as_bool(), Some(false));
+    assert!(get(&m, "collisions").as_f64().unwrap() >= 20.0);
+    let options = parse(r#"{ "architecture": "hybrid", "perturb": ["door:1,1@2"] }"#);
+    assert!(kinolab_js::arena(world, options).is_err());
+    let feeds = parse(
+        "[[false,false,false,false,true],[false,false,false,false,true],[false,false,false,false,true],[false,false,false,false,true],[false,false,false,false,true],[false,false,false,false,true]]",
+    );
+    let routes = kinolab_js::routes(feeds).unwrap();
+    assert_eq!(
+        get(&routes, "paradigm").as_string().unwrap(),
+        "hierarchical"
+    );
+}

@@ -1,7 +1,7 @@
 //! Inverse kinematics (twist → wheel commands), forward kinematics (wheel
 //! spins → twist, by least squares) and pose integration.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use serde::Serialize;
 
 use crate::analysis::line_row;
@@ -211,63 +211,85 @@ impl Chassis {
                 ),
             ));
         }
-        let mut normal = Matrix3::zeros();
-        let mut rhs = Vector3::zeros();
-        let mut b_norm2 = 0.0;
-        let mut used = 0;
-        let mut add = |row: Vector3<f64>, b: f64| {
-            normal += row * row.transpose();
-            rhs += row * b;
-            b_norm2 += b * b;
-            used += 1;
+        let rows = self.known_rows(spins)?;
+        let b_norm = rows.iter().map(|(_, b)| b * b).sum::<f64>().sqrt();
+        let within = |residual: f64| residual <= 1e-9 * b_norm || residual <= 1e-12;
+        // Fast path: the 3×3 normal equations. They square the rows'
+        // conditioning, so when their answer leaves a residual the SVD of the
+        // rows themselves decides (it also gives the smallest twist when the
+        // spins leave some motion free).
+        let (twist, determined) = match solve_normal(&rows) {
+            Some(twist) if within(residual_of(&rows, &twist)) => (twist, true),
+            _ => solve_svd(&rows),
         };
-        for (i, ((w, rows), spin)) in self.wheels().iter().zip(self.rows()).zip(spins).enumerate() {
-            if let Some(spin) = spin {
-                finite(format!("wheels[{i}]"), *spin)?;
-                if w.kind != WheelKind::Spherical {
-                    add(rows.rolling, rows.spin_gain * spin);
-                }
-            }
-            if w.kind.constrains_chassis() {
-                add(rows.sliding, 0.0);
-            }
-        }
-        // AᵀA is 3×3: its explicit inverse (cofactors over the determinant)
-        // is exact enough and fast everywhere; a near-singular one means the
-        // spins leave some motion free, and the SVD gives the smallest twist.
-        let scale = normal.norm();
-        let invertible = normal.determinant().abs() > 1e-12 * scale * scale * scale;
-        let (twist, determined) = match normal.try_inverse() {
-            Some(inverse) if invertible => (inverse * rhs, true),
-            _ => {
-                let svd = normal.svd(true, true);
-                let eps = 1e-12 * svd.singular_values.max();
-                match svd.solve(&rhs, eps) {
-                    Ok(v) => (v, false),
-                    Err(_) => (Vector3::zeros(), false),
-                }
-            }
-        };
-        // ‖Av − b‖² = vᵀ(AᵀA)v − 2 vᵀ(Aᵀb) + bᵀb, recomputed directly for accuracy.
-        let mut residual2 = 0.0;
-        for ((w, rows), spin) in self.wheels().iter().zip(self.rows()).zip(spins) {
-            if let Some(spin) = spin
-                && w.kind != WheelKind::Spherical
-            {
-                residual2 += (rows.rolling.dot(&twist) - rows.spin_gain * spin).powi(2);
-            }
-            if w.kind.constrains_chassis() {
-                residual2 += rows.sliding.dot(&twist).powi(2);
-            }
-        }
-        let residual = residual2.sqrt();
+        let residual = residual_of(&rows, &twist);
         Ok(ForwardSolution {
             twist: [twist.x, twist.y, twist.z],
             residual,
-            consistent: residual <= 1e-9 * b_norm2.sqrt() || residual <= 1e-12,
+            consistent: within(residual),
             determined,
-            rows: used,
+            rows: rows.len(),
         })
+    }
+
+    /// The rows forward kinematics can use, each with its right-hand side:
+    /// rolling rows of wheels with a known spin, sliding rows of wheels that
+    /// constrain the chassis.
+    fn known_rows(&self, spins: &[Option<f64>]) -> Result<Vec<(Vector3<f64>, f64)>, FieldError> {
+        let mut rows = Vec::with_capacity(2 * spins.len());
+        for (i, ((w, r), spin)) in self.wheels().iter().zip(self.rows()).zip(spins).enumerate() {
+            if let Some(spin) = spin {
+                finite(format!("wheels[{i}]"), *spin)?;
+                if w.kind != WheelKind::Spherical {
+                    rows.push((r.rolling, r.spin_gain * spin));
+                }
+            }
+            if w.kind.constrains_chassis() {
+                rows.push((r.sliding, 0.0));
+            }
+        }
+        Ok(rows)
+    }
+}
+
+/// ‖Av − b‖ over the rows, computed row by row for accuracy.
+fn residual_of(rows: &[(Vector3<f64>, f64)], twist: &Vector3<f64>) -> f64 {
+    rows.iter()
+        .map(|(row, b)| (row.dot(twist) - b).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// Least squares by AᵀA v = Aᵀb with the 3×3 inverse; `None` when AᵀA is
+/// (nearly) singular.
+fn solve_normal(rows: &[(Vector3<f64>, f64)]) -> Option<Vector3<f64>> {
+    let mut normal = Matrix3::zeros();
+    let mut rhs = Vector3::zeros();
+    for (row, b) in rows {
+        normal += row * row.transpose();
+        rhs += row * *b;
+    }
+    let scale = normal.norm();
+    if normal.determinant().abs() <= 1e-12 * scale * scale * scale {
+        return None;
+    }
+    normal.try_inverse().map(|inverse| inverse * rhs)
+}
+
+/// Least squares by the SVD of A itself: the minimum-norm twist, and
+/// whether the rows pin all three components down.
+fn solve_svd(rows: &[(Vector3<f64>, f64)]) -> (Vector3<f64>, bool) {
+    if rows.is_empty() {
+        return (Vector3::zeros(), false);
+    }
+    let a = DMatrix::from_fn(rows.len(), 3, |i, j| rows[i].0[j]);
+    let b = DVector::from_iterator(rows.len(), rows.iter().map(|(_, b)| *b));
+    let svd = a.svd(true, true);
+    let eps = 1e-9 * svd.singular_values.max();
+    let rank = svd.rank(eps);
+    match svd.solve(&b, eps) {
+        Ok(v) => (Vector3::new(v[0], v[1], v[2]), rank == 3),
+        Err(_) => (Vector3::zeros(), false),
     }
 }
 

@@ -16,6 +16,8 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("support-polygon", locomotion::support_polygon::create),
     ("gait-studio", locomotion::gait_studio::create),
     ("grid-planner", architecture::grid_planner::create),
+    ("architecture-arena", architecture::arena::create),
+    ("sensing-routes", architecture::routes::create),
     ("scripted-vs-sensing", autonomy::scripted_vs_sensing::create),
     ("wheel-workbench", wheels::workbench::create),
     ("wheel-drive", wheels::drive::create),

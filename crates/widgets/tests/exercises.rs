@@ -119,3 +119,58 @@ fn the_static_phases_exercise_wants_a_crawl_order() {
     h.run_steps(2);
     h.get_by_label_contains("Solved. Statically stable through the whole cycle");
 }
+
+#[test]
+fn the_person_exercise_wants_fresh_plans() {
+    let mut h = harness(widget(
+        "architecture-arena",
+        &[("task", "survive-the-person"), ("planning_cost", "12")],
+    ));
+    h.run_steps(3);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("touched something");
+    h.get_all_by_label("planning cost (ms per cell)")
+        .next()
+        .unwrap()
+        .set_value_accesskit(2.0);
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("without touching the walker");
+}
+
+#[test]
+fn the_pick_exercise_runs_every_pick() {
+    let mut h = harness(widget(
+        "architecture-arena",
+        &[("task", "pick-architecture")],
+    ));
+    h.run_steps(3);
+    // Reactive everywhere: the glass mission keeps it at the window.
+    h.get_by_label("Check by running").click();
+    h.run_steps(2);
+    h.get_by_label_contains("reactive on \"the goal is behind a glass wall\"");
+    // The third row's hybrid.
+    h.get_all_by_label("hybrid").nth(2).unwrap().click();
+    h.run_steps(2);
+    h.get_by_label("Check by running").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Every pick reached its goal");
+}
+
+#[test]
+fn the_routes_exercise_wants_a_hybrid_wiring() {
+    let mut h = harness(widget("sensing-routes", &[("task", "wire-hybrid")]));
+    h.run_steps(3);
+    h.get_by_label("reactive").click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("This wiring is reactive");
+    h.get_by_label("hybrid").click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Hybrid: some sensors reach behaviours directly");
+}

@@ -6,13 +6,14 @@ use crate::obstacle::{Obstacle, Shape};
 use crate::{FieldError, Pose, Rect, Vec2, World};
 
 /// Each world's id and file.
-pub const WORLDS: [(&str, &str); 6] = [
+pub const WORLDS: [(&str, &str); 7] = [
     ("two-rooms", include_str!("../worlds/two-rooms.json")),
     ("scattered", include_str!("../worlds/scattered.json")),
     ("u-trap", include_str!("../worlds/u-trap.json")),
     ("corridor", include_str!("../worlds/corridor.json")),
     ("lights", include_str!("../worlds/lights.json")),
     ("crossing", include_str!("../worlds/crossing.json")),
+    ("office", include_str!("../worlds/office.json")),
 ];
 
 /// The example world called `id`.

@@ -85,6 +85,9 @@ struct ObstacleEntry {
     repeat: Option<Repeat>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     appear_at: Option<f64>,
+    /// Glass: seen through by light and range sensors.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    glass: Option<bool>,
 }
 
 fn point(field: &str, q: [f64; 2]) -> Result<Vec2, FieldError> {
@@ -214,6 +217,9 @@ impl ObstacleEntry {
         if let Some(t) = self.appear_at {
             o = o.appearing_at(non_negative(f("appear_at"), t)?);
         }
+        if self.glass == Some(true) {
+            o = o.glazed();
+        }
         Ok(o)
     }
 
@@ -251,6 +257,7 @@ impl ObstacleEntry {
         if o.appear_at > 0.0 {
             e.appear_at = Some(o.appear_at);
         }
+        e.glass = o.glass.then_some(true);
         e
     }
 }
@@ -359,7 +366,8 @@ mod tests {
         let text = r#"{ "bounds": [0, 0, 5, 5], "start": {"x": 1, "y": 1, "theta_deg": 90},
             "goal": {"x": 4, "y": 4}, "lights": [{"x": 2, "y": 2, "intensity": 3}],
             "obstacles": [{ "kind": "circle", "x": 1, "y": 3, "radius": 0.2,
-                            "path": [[4, 3]], "speed": 0.5, "repeat": "loop", "appear_at": 2 }] }"#;
+                            "path": [[4, 3]], "speed": 0.5, "repeat": "loop", "appear_at": 2 },
+                          { "kind": "wall", "from": [3, 0], "to": [3, 2], "glass": true }] }"#;
         let w = World::from_json(text).unwrap();
         assert!((w.start.theta - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
         assert!(!w.obstacles[0].present(1.0));

@@ -229,6 +229,7 @@ impl Grid {
 }
 
 /// A queue entry ordered so the heap pops the smallest distance first.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct Entry(pub(crate) f64, pub(crate) Cell);
 
 impl PartialEq for Entry {

@@ -161,6 +161,8 @@ pub struct Obstacle {
     pub script: Option<Script>,
     /// Not there before this time (0: always there).
     pub appear_at: f64,
+    /// Glass: light and range sensors see through it; only a bumper finds it.
+    pub glass: bool,
     collider: Collider,
     /// The start-place bounding box: [x_min, y_min, x_max, y_max].
     aabb: [f64; 4],
@@ -171,6 +173,7 @@ impl PartialEq for Obstacle {
         self.shape == other.shape
             && self.script == other.script
             && self.appear_at == other.appear_at
+            && self.glass == other.glass
     }
 }
 
@@ -241,6 +244,7 @@ impl Obstacle {
             shape,
             script: None,
             appear_at: 0.0,
+            glass: false,
             collider,
             aabb,
         }
@@ -249,6 +253,12 @@ impl Obstacle {
     /// The same obstacle, moving along `script`.
     pub fn moving(mut self, script: Script) -> Self {
         self.script = Some(script);
+        self
+    }
+
+    /// The same obstacle made of glass.
+    pub fn glazed(mut self) -> Self {
+        self.glass = true;
         self
     }
 

@@ -46,48 +46,110 @@ impl Grid {
     /// must be free (else there is no path). The work is bounded by the
     /// grid: each cell is expanded at most once.
     pub fn search(&self, start: Cell, goal: Cell, algorithm: Algorithm) -> Search {
-        let mut none = Search {
-            cost: None,
-            path: Vec::new(),
-            expanded: Vec::new(),
-        };
-        if !self.is_free(start) || !self.is_free(goal) {
-            return none;
+        let mut searching = Searching::new(self, start, goal, algorithm);
+        loop {
+            if let Some(done) = searching.advance(self, usize::MAX) {
+                return done;
+            }
         }
-        let h = |c: Cell| match algorithm {
-            Algorithm::Dijkstra => 0.0,
-            Algorithm::AStar => octile(self, c, goal),
+    }
+}
+
+/// A search in progress, so its work can be spread over many frames or
+/// charged as time: [`Searching::advance`] expands at most a given number
+/// of cells and returns the result once the search is over. It must be
+/// advanced on the grid it was started on.
+#[derive(Debug, Clone)]
+pub struct Searching {
+    goal: Cell,
+    algorithm: Algorithm,
+    g: Vec<f64>,
+    came: Vec<Option<Cell>>,
+    closed: Vec<bool>,
+    open: BinaryHeap<Entry>,
+    expanded: Vec<Cell>,
+    nx: usize,
+}
+
+impl Searching {
+    /// A search from `start` to `goal` with nothing expanded yet.
+    pub fn new(grid: &Grid, start: Cell, goal: Cell, algorithm: Algorithm) -> Self {
+        let n = grid.nx * grid.ny;
+        let mut s = Self {
+            goal,
+            algorithm,
+            g: vec![f64::INFINITY; n],
+            came: vec![None; n],
+            closed: vec![false; n],
+            open: BinaryHeap::new(),
+            expanded: Vec::new(),
+            nx: grid.nx,
         };
-        let n = self.nx * self.ny;
-        let index = |(i, j): Cell| j * self.nx + i;
-        let mut g = vec![f64::INFINITY; n];
-        let mut came: Vec<Option<Cell>> = vec![None; n];
-        let mut closed = vec![false; n];
-        g[index(start)] = 0.0;
-        let mut open = BinaryHeap::from([Entry(h(start), start)]);
-        while let Some(Entry(_, c)) = open.pop() {
-            if std::mem::replace(&mut closed[index(c)], true) {
+        if grid.is_free(start) && grid.is_free(goal) {
+            let k = s.index(start);
+            s.g[k] = 0.0;
+            s.open.push(Entry(s.h(grid, start), start));
+        }
+        s
+    }
+
+    /// Cells expanded so far.
+    pub fn expanded(&self) -> &[Cell] {
+        &self.expanded
+    }
+
+    fn index(&self, (i, j): Cell) -> usize {
+        j * self.nx + i
+    }
+
+    fn h(&self, grid: &Grid, c: Cell) -> f64 {
+        match self.algorithm {
+            Algorithm::Dijkstra => 0.0,
+            Algorithm::AStar => octile(grid, c, self.goal),
+        }
+    }
+
+    /// Expand up to `budget` more cells; `Some` once the goal is reached or
+    /// the frontier is empty (no path).
+    pub fn advance(&mut self, grid: &Grid, budget: usize) -> Option<Search> {
+        let mut spent = 0;
+        while spent < budget {
+            let Some(Entry(_, c)) = self.open.pop() else {
+                return Some(self.finish(None));
+            };
+            let k = self.index(c);
+            if std::mem::replace(&mut self.closed[k], true) {
                 continue;
             }
-            none.expanded.push(c);
-            if c == goal {
-                return Search {
-                    cost: Some(g[index(goal)]),
-                    path: walk_back(&came, goal, index),
-                    expanded: none.expanded,
-                };
+            spent += 1;
+            self.expanded.push(c);
+            if c == self.goal {
+                return Some(self.finish(Some(self.g[k])));
             }
-            for (m, step) in self.moves(c) {
-                let k = index(m);
-                let through = g[index(c)] + step;
-                if !closed[k] && through < g[k] {
-                    g[k] = through;
-                    came[k] = Some(c);
-                    open.push(Entry(through + h(m), m));
+            for (m, step) in grid.moves(c) {
+                let km = self.index(m);
+                let through = self.g[k] + step;
+                if !self.closed[km] && through < self.g[km] {
+                    self.g[km] = through;
+                    self.came[km] = Some(c);
+                    self.open.push(Entry(through + self.h(grid, m), m));
                 }
             }
         }
-        none
+        None
+    }
+
+    fn finish(&mut self, cost: Option<f64>) -> Search {
+        self.open.clear();
+        let nx = self.nx;
+        Search {
+            cost,
+            path: match cost {
+                Some(_) => walk_back(&self.came, self.goal, |(i, j)| j * nx + i),
+                None => Vec::new(),
+            },
+            expanded: std::mem::take(&mut self.expanded),
+        }
     }
 }
 

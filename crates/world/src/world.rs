@@ -128,12 +128,12 @@ impl World {
         out
     }
 
-    /// How far a ray from `origin` along the unit vector `dir` travels
-    /// before it meets an obstacle or the fence, up to `max`; `None` when
-    /// nothing is within `max`.
+    /// How far a ray of light from `origin` along the unit vector `dir`
+    /// travels before it meets an obstacle or the fence, up to `max`;
+    /// `None` when nothing is within `max`. Glass lets it through.
     pub fn ray(&self, origin: Vec2, dir: Vec2, max: f64, t: f64) -> Option<f64> {
         let mut best = self.fence_ray(origin, dir).filter(|d| *d <= max);
-        for o in &self.obstacles {
+        for o in self.obstacles.iter().filter(|o| !o.glass) {
             let limit = best.unwrap_or(max);
             if let Some(d) = o.ray(origin, dir, limit, t)
                 && d <= limit
@@ -160,7 +160,7 @@ impl World {
         (t.is_finite()).then_some(t.max(0.0))
     }
 
-    /// Whether the straight line from `a` to `b` is clear of obstacles.
+    /// Whether one can see from `a` to `b`: no obstacle but glass between.
     pub fn line_of_sight(&self, a: Vec2, b: Vec2, t: f64) -> bool {
         let span = b - a;
         let length = span.norm();
@@ -170,7 +170,7 @@ impl World {
         let dir = span / length;
         self.obstacles
             .iter()
-            .all(|o| o.ray(a, dir, length, t).is_none())
+            .all(|o| o.glass || o.ray(a, dir, length, t).is_none())
     }
 
     /// The obstacles (with where they are) present at time `t`.
@@ -217,6 +217,25 @@ mod tests {
         let d = Vec2::new(1.0, 1.0).normalize();
         let hit = w.ray(Vec2::new(1.0, 0.0), d, 10.0, 0.0).unwrap();
         assert!((hit - 1.5 * 2f64.sqrt()).abs() < 1e-12, "{hit}");
+    }
+
+    #[test]
+    fn glass_lets_light_and_rays_through_but_not_the_robot() {
+        let mut w = World::empty("window", Rect::from([0.0, 0.0, 4.0, 3.0]));
+        w.obstacles.push(
+            Obstacle::new(Shape::Wall {
+                from: Vec2::new(2.0, 0.0),
+                to: Vec2::new(2.0, 3.0),
+                thickness: 0.1,
+            })
+            .glazed(),
+        );
+        let o = Vec2::new(1.0, 1.5);
+        // The ray runs on to the fence 3 m away, not to the glass 0.95 m away.
+        assert!((w.ray(o, Vec2::new(1.0, 0.0), 10.0, 0.0).unwrap() - 3.0).abs() < 1e-12);
+        assert!(w.line_of_sight(o, Vec2::new(3.5, 1.5), 0.0));
+        let (d, _) = w.nearest(o, 0.0);
+        assert!((d - 0.95).abs() < 1e-12, "{d}");
     }
 
     #[test]

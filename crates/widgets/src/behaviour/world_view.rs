@@ -41,8 +41,15 @@ pub fn draw_world(ui: &egui::Ui, painter: &Painter, view: &PlaneView, world: &Wo
         Stroke::new(2.0, solid),
         egui::StrokeKind::Middle,
     );
-    for (_, shape) in world.obstacles_at(t) {
-        draw_obstacle(painter, view, &shape, solid);
+    let glass = Color32::from_rgb(120, 190, 230).gamma_multiply(0.7);
+    for (i, shape) in world.obstacles_at(t) {
+        let see_through = world.obstacles.get(i).is_some_and(|o| o.glass);
+        draw_obstacle(
+            painter,
+            view,
+            &shape,
+            if see_through { glass } else { solid },
+        );
     }
     for light in &world.lights {
         let at = view.to_screen([light.x, light.y]);

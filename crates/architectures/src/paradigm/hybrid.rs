@@ -1,0 +1,154 @@
+//! The hybrid robot in its three-layer form.
+//!
+//! - the **planner** (deliberative layer) runs A* on the cartographer's
+//!   map, slowly and in the background: the robot keeps moving meanwhile;
+//! - the **sequencer** (executive) holds the plan, hands the next waypoint
+//!   to the skills and watches progress: no progress for a while, a
+//!   waypoint the map now shows blocked, or a goal that moved, and it asks
+//!   for a new plan;
+//! - the **skills** (reactive layer) run every step on fresh percepts.
+
+use kinolab_world::sensors::Percepts;
+use kinolab_world::{FieldError, Vec2};
+
+use super::{Act, Belief, Settings, aimed_at, goal_point, plan_age, plan_target};
+use crate::follow::Follower;
+use crate::map::Cartographer;
+use crate::planner::{Outcome, Plan, Planner};
+use crate::skills::Skills;
+
+/// Seconds without getting 0.1 m closer to the waypoint before a replan.
+pub const PATIENCE: f64 = 3.0;
+/// A goal this far (m) from the one planned for counts as moved.
+const MOVED: f64 = 0.3;
+
+/// The executive: the plan being carried out and how it is going.
+#[derive(Debug, Clone, Default)]
+pub struct Sequencer {
+    pub plan: Option<Plan>,
+    follower: Option<Follower>,
+    best: f64,
+    stalled: f64,
+    /// Why the last new plan was asked for.
+    pub reason: Option<&'static str>,
+}
+
+impl Sequencer {
+    /// Take a new plan.
+    fn adopt(&mut self, plan: Plan) {
+        self.follower = Some(Follower::new(plan.waypoints.clone()));
+        self.plan = Some(plan);
+        self.best = f64::INFINITY;
+        self.stalled = 0.0;
+    }
+
+    /// Whether (and why) a new plan is needed, looking at the map, the
+    /// goal and the progress towards the waypoint.
+    fn needs_plan(
+        &mut self,
+        map: &Cartographer,
+        at: Vec2,
+        goal: Vec2,
+        dt: f64,
+    ) -> Option<&'static str> {
+        let Some(plan) = &self.plan else {
+            return Some("no plan yet");
+        };
+        if (Vec2::new(plan.goal[0], plan.goal[1]) - goal).norm() > MOVED {
+            return Some("the goal moved");
+        }
+        let target = plan_target(&mut self.follower, at)?;
+        if blocked(map, at, target) {
+            return Some("the way to the waypoint is blocked");
+        }
+        let d = (target - at).norm();
+        if d < self.best - 0.1 {
+            self.best = d;
+            self.stalled = 0.0;
+        } else {
+            self.stalled += dt;
+        }
+        (self.stalled > PATIENCE).then_some("no progress")
+    }
+}
+
+/// Whether the map holds an occupied cell on the segment from `a` to `b`
+/// (ignoring the robot's own cell).
+fn blocked(map: &Cartographer, a: Vec2, b: Vec2) -> bool {
+    let span = b - a;
+    let samples = (span.norm() / (0.5 * map.cell)).ceil().min(1e5) as usize;
+    let own = map.cell_of(a);
+    (1..=samples).any(|k| {
+        map.cell_of(a + span * (k as f64 / samples as f64))
+            .is_some_and(|c| Some(c) != own && map.occupied(c))
+    })
+}
+
+#[derive(Debug, Clone)]
+pub struct Hybrid {
+    pub map: Cartographer,
+    pub planner: Planner,
+    pub sequencer: Sequencer,
+    pub skills: Skills,
+    radius: f64,
+}
+
+impl Hybrid {
+    pub fn new(settings: &Settings, map: Cartographer) -> Result<Self, FieldError> {
+        Ok(Self {
+            map,
+            planner: Planner::new(settings.planning_cost)?,
+            sequencer: Sequencer::default(),
+            skills: Skills::avoid_and_go(&settings.body),
+            radius: settings.body.radius(),
+        })
+    }
+
+    pub fn act(&mut self, p: &Percepts, dt: f64) -> Act {
+        let pose = p.odometry;
+        let at = Vec2::new(pose.x, pose.y);
+        // The cartographer listens all the time.
+        self.map.update(pose, p, self.radius);
+        if let Some(goal) = goal_point(p)
+            && let Some(reason) = self.sequencer.needs_plan(&self.map, at, goal, dt)
+            && self
+                .planner
+                .pending
+                .as_ref()
+                .is_none_or(|busy| reason == "the goal moved" && (busy.goal - goal).norm() > MOVED)
+        {
+            self.sequencer.reason = Some(reason);
+            self.sequencer.stalled = 0.0;
+            if self.planner.request(&self.map, at, goal, p.time).is_err() {
+                self.planner.pending = None;
+            }
+        }
+        match self.planner.tick(dt, p.time) {
+            Some(Outcome::Found(plan)) => self.sequencer.adopt(plan),
+            Some(Outcome::NoPath { .. }) => {
+                self.sequencer.plan = None;
+                self.sequencer.follower = None;
+            }
+            None => {}
+        }
+        // The skills chase the waypoint, or the goal itself before any plan.
+        let aimed = match plan_target(&mut self.sequencer.follower, at) {
+            Some(target) => aimed_at(p, target),
+            None => p.clone(),
+        };
+        let step = self.skills.act(&aimed, dt);
+        Act {
+            command: step.command,
+            activity: step.in_control.unwrap_or_else(|| "idle".into()),
+            model_age: plan_age(&self.sequencer.plan, p.time),
+        }
+    }
+
+    pub fn belief(&self) -> Belief<'_> {
+        Belief {
+            map: Some(&self.map),
+            plan: self.sequencer.follower.as_ref().map_or(&[], |f| f.ahead()),
+            planning: self.planner.pending.as_ref(),
+        }
+    }
+}
