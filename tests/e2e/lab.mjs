@@ -72,20 +72,20 @@ try {
   });
 
   await check("a widget's state in a link is restored and kept in the address", async () => {
-    // The leg-events widget (the lesson's second widget, w1) set to five
+    // The leg-events widget (the lesson's first widget, w0) set to five
     // legs: postcard writes 5 as the byte 0x05, base64url "BQ", after the
     // format letter "a".
-    const lesson = "automation/legs-and-balance";
-    await page.goto(`${server.url}#/${lesson}?w1=aBQ`);
+    const lesson = "legged-locomotion/legs-and-wheels";
+    await page.goto(`${server.url}#/${lesson}?w0=aBQ`);
     await waitForPage(page, lesson);
     await page.waitForTimeout(500);
-    assert.ok((await page.evaluate(() => location.hash)).endsWith("?w1=aBQ"));
+    assert.ok((await page.evaluate(() => location.hash)).endsWith("?w0=aBQ"));
     await page.reload();
     assert.equal(await waitForLab(page), lesson);
     await page.waitForTimeout(300);
-    assert.ok((await page.evaluate(() => location.hash)).endsWith("?w1=aBQ"));
+    assert.ok((await page.evaluate(() => location.hash)).endsWith("?w0=aBQ"));
     // A damaged state is dropped: the widget starts as the lesson set it up.
-    await page.goto(`${server.url}#/${lesson}?w1=zzz`);
+    await page.goto(`${server.url}#/${lesson}?w0=zzz`);
     await waitForPage(page, lesson);
     await page.waitForTimeout(500);
     assert.equal(await page.evaluate(() => location.hash), `#/${lesson}`);

@@ -79,6 +79,41 @@ fn cpg_10s() -> f64 {
     cpg.run().map_or(f64::NAN, |s| s.theta[0])
 }
 
+thread_local! {
+    static WALKER: std::cell::RefCell<Option<(kinolab_locomotion::walker::Walker, Vec<f64>, f64)>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// One frame of the hexapod walker: the tripod gait moved on 1/120 of a
+/// cycle, six leg IKs from the last frame's joints.
+fn hexapod_frame() -> f64 {
+    WALKER.with(|cell| {
+        let mut state = cell.borrow_mut();
+        if state.is_none() {
+            let walker = kinolab_locomotion::named("hexapod-tripod").and_then(|mut g| {
+                g.stride = 0.06;
+                kinolab_locomotion::walker::Walker::new(g, 0.03).ok()
+            });
+            *state = walker.map(|w| {
+                let q = w.model.zero_state();
+                (w, q, 0.0)
+            });
+        }
+        let Some((walker, q, tau)) = state.as_mut() else {
+            return f64::NAN;
+        };
+        *tau = (*tau + 1.0 / 120.0).rem_euclid(1.0);
+        match walker.step(black_box(*tau), q) {
+            Ok(step) => {
+                let error = step.errors.iter().copied().fold(0.0, f64::max);
+                *q = step.q;
+                error
+            }
+            Err(_) => f64::NAN,
+        }
+    })
+}
+
 fn leg_events() -> f64 {
     kinolab_locomotion::leg_events(black_box(17)).map_or(f64::NAN, |n| n as f64)
 }
@@ -251,6 +286,10 @@ pub const KERNELS: &[Kernel] = &[
         run: behaviour::world_step,
     },
     Kernel {
+        name: "hexapod_walker_frame",
+        run: hexapod_frame,
+    },
+    Kernel {
         name: "astar_200x200",
         run: architecture::astar_200,
     },
@@ -337,6 +376,11 @@ mod tests {
             path > 1.25f64.sqrt() && path < 2.0 * 1.25f64.sqrt(),
             "{path}"
         );
+        // Every foot of the walking hexapod within 1e-6 m of its target.
+        for _ in 0..5 {
+            let error = run_named("hexapod_walker_frame", 1);
+            assert!((0.0..1e-6).contains(&error), "{error}");
+        }
         // The maze path winds: longer than the diagonal, as long as
         // Dijkstra's.
         let astar = run_named("astar_200x200", 1);

@@ -55,6 +55,30 @@ pub fn static_phases(gait: &Gait, beta: f64) -> Result<Feedback, FieldError> {
     )))
 }
 
+/// "Find the largest push the ankle can still catch": a body at rest over
+/// the ankle (x = 0) of `table`'s foot, pushed forwards at `push` m/s. The
+/// answer is ω times the distance to the toe (the capture point must stay
+/// on the foot); within 5 % below it counts.
+pub fn largest_push(table: &crate::balance::CartTable, push: f64) -> Result<Feedback, FieldError> {
+    let push = kinolab_common::error::in_range("push", push, 0.0, 20.0)?;
+    let limit = table.omega() * table.toe;
+    let caught = table.push(0.0, push, 6.0, 0.005)?.recovered;
+    Ok(if !caught {
+        Feedback::not_yet(format!(
+            "At {push:.3} m/s the capture point passes the toe: the ZMP the body needs leaves the foot and it falls. Push less."
+        ))
+    } else if push < 0.95 * limit {
+        Feedback::not_yet(format!(
+            "{push:.3} m/s is caught, but a harder push would be too. Push more."
+        ))
+    } else {
+        Feedback::met(format!(
+            "Solved: {push:.3} m/s is caught, and the limit is ω · toe = {:.3} m/s. Beyond it the capture point lies past the toe.",
+            limit
+        ))
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -72,5 +96,20 @@ mod tests {
         assert!(!f.met && f.message.contains("τ ="), "{}", f.message);
         g.duty_factor = 0.9;
         assert!(static_phases(&g, 0.8).unwrap().message.contains("β = 0.80"));
+    }
+
+    #[test]
+    fn the_largest_push_is_omega_times_the_toe() {
+        let table = crate::balance::CartTable::new(0.8, -0.05, 0.15).unwrap();
+        let limit = table.omega() * 0.15;
+        assert!(largest_push(&table, 0.98 * limit).unwrap().met);
+        assert!(!largest_push(&table, 0.8 * limit).unwrap().met);
+        let over = largest_push(&table, 1.02 * limit).unwrap();
+        assert!(
+            !over.met && over.message.contains("passes the toe"),
+            "{}",
+            over.message
+        );
+        assert_eq!(largest_push(&table, f64::NAN).unwrap_err().field, "push");
     }
 }

@@ -6,6 +6,7 @@
 //! The geometry is small and exact enough to write out: a monotone-chain
 //! convex hull and point-to-segment distances.
 
+pub mod balance;
 pub mod cpg;
 mod error;
 mod events;
@@ -14,10 +15,11 @@ pub mod gait;
 pub mod report;
 mod stability;
 mod transport;
+pub mod walker;
 
 pub use cpg::Cpg;
 pub use error::FieldError;
 pub use events::{MAX_LEGS_EXACT, leg_events, leg_events_f64};
 pub use gait::{Gait, Leg, named, named_ids};
-pub use stability::{Point, Stability, static_stability};
+pub use stability::{Point, Stability, convex_hull, static_stability};
 pub use transport::{STANDARD_GRAVITY, cost_of_transport};

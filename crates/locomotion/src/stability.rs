@@ -45,7 +45,7 @@ fn cross(o: Point, a: Point, b: Point) -> f64 {
 /// Convex hull by Andrew's monotone chain, counter-clockwise, without
 /// collinear corners. Returns one point for coincident input and the two
 /// ends for collinear input.
-pub(crate) fn convex_hull(points: &[Point]) -> Vec<Point> {
+pub fn convex_hull(points: &[Point]) -> Vec<Point> {
     let mut sorted = points.to_vec();
     sorted.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
     sorted.dedup();

@@ -134,6 +134,54 @@ pub static WIDGETS: &[WidgetSchema] = &[
         rules: None,
     },
     WidgetSchema {
+        name: "hexapod-walker",
+        summary: "the lab's hexapod walking a gait by per-leg inverse kinematics, with its support polygon and joint angles",
+        params: &[
+            param(
+                "gait",
+                Kind::Choice {
+                    options: &["hexapod-tripod", "hexapod-wave", "hexapod-tetrapod"],
+                },
+                Some("hexapod-tripod"),
+                "the gait to start with",
+            ),
+            param(
+                "stride",
+                Kind::Number { min: 0.0, max: 0.3 },
+                Some("0.06"),
+                "the stride L (m)",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "zmp-cart-table",
+        summary: "a body on a cart-table over one foot: push it and watch the zero moment point",
+        params: &[
+            param(
+                "height",
+                Kind::Number { min: 0.3, max: 1.5 },
+                Some("0.8"),
+                "the centre of mass's height z_c (m)",
+            ),
+            param(
+                "push",
+                Kind::Number { min: 0.0, max: 2.0 },
+                Some("0.2"),
+                "the speed a push gives the body (m/s)",
+            ),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["largest-push"],
+                },
+                None,
+                "a graded task: `largest-push` asks for the largest push the ankle can still catch, to within 5 %",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
         name: "grid-planner",
         summary: "a world as an occupancy grid; Dijkstra and A* expanding it cell by cell",
         params: &[

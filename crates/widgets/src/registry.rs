@@ -15,6 +15,8 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("leg-events", locomotion::leg_events::create),
     ("support-polygon", locomotion::support_polygon::create),
     ("gait-studio", locomotion::gait_studio::create),
+    ("hexapod-walker", locomotion::walker::create),
+    ("zmp-cart-table", locomotion::zmp::create),
     ("grid-planner", architecture::grid_planner::create),
     ("architecture-arena", architecture::arena::create),
     ("sensing-routes", architecture::routes::create),

@@ -168,9 +168,33 @@ fn the_routes_exercise_wants_a_hybrid_wiring() {
     h.get_by_label("Check").click();
     h.run_steps(2);
     h.get_by_label_contains("This wiring is reactive");
-    h.get_by_label("hybrid").click();
+    // The "Start from" button (the legend below names the routes too).
+    h.get_all_by_label("hybrid").next().unwrap().click();
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
     h.get_by_label_contains("Hybrid: some sensors reach behaviours directly");
+}
+
+#[test]
+fn the_push_exercise_wants_the_capture_limit() {
+    let mut h = harness(widget(
+        "zmp-cart-table",
+        &[("task", "largest-push"), ("push", "0.3")],
+    ));
+    h.run_steps(3);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Push more");
+    // ω = √(9.80665 / 0.8) ≈ 3.501 1/s; the toe 0.15 m ahead: 0.525 m/s.
+    for (push, verdict) in [(0.6, "passes the toe"), (0.52, "Solved")] {
+        h.get_all_by_label("push (m/s)")
+            .next()
+            .unwrap()
+            .set_value_accesskit(push);
+        h.run_steps(2);
+        h.get_by_label("Check").click();
+        h.run_steps(2);
+        h.get_by_label_contains(verdict);
+    }
 }

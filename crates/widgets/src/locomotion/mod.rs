@@ -4,3 +4,5 @@
 pub mod gait_studio;
 pub mod leg_events;
 pub mod support_polygon;
+pub mod walker;
+pub mod zmp;

@@ -1,0 +1,195 @@
+//! The hexapod walks: a gait's feet become targets for the lab's hexapod
+//! model, and each leg's inverse kinematics turns them into joint angles.
+//!
+//! The body stays at the origin of its own frame; in stance a foot slides
+//! backwards along a straight line on the ground (the body moving forwards
+//! over it), in swing it returns along an arc lifted `lift` metres. Feet
+//! the leg cannot reach are reported, never hidden.
+
+use kinolab_mechanism::{FrameRef, Goal, Model, Options, Target, Vector3};
+use serde::Serialize;
+
+use crate::FieldError;
+use crate::gait::Gait;
+
+/// The hexapod's legs in the gait's order (L1 L2 L3 R1 R2 R3, front to back).
+pub const LEGS: [&str; 6] = [
+    "left-front",
+    "left-middle",
+    "left-rear",
+    "right-front",
+    "right-middle",
+    "right-rear",
+];
+
+/// A foot this far (m) from its target counts as reached.
+pub const REACHED: f64 = 1e-6;
+
+/// The catalogue hexapod walking one gait.
+#[derive(Debug, Clone)]
+pub struct Walker {
+    pub model: Model,
+    pub gait: Gait,
+    /// How high a swinging foot is lifted, m.
+    pub lift: f64,
+    feet: Vec<FrameRef>,
+    /// Each foot where it stands in the zero pose: the middle of its stride.
+    neutral: Vec<Vector3<f64>>,
+}
+
+/// The walker at one instant.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Step {
+    pub tau: f64,
+    /// Joint values, the model's order.
+    pub q: Vec<f64>,
+    /// Where each foot should be, body frame, m.
+    pub targets: Vec<[f64; 3]>,
+    /// How far each foot ended from its target, m.
+    pub errors: Vec<f64>,
+    /// Legs whose target was out of reach.
+    pub unreachable: Vec<&'static str>,
+}
+
+impl Walker {
+    /// The hexapod walking `gait` (six legs) with its stride, lifting
+    /// swinging feet by `lift` m.
+    pub fn new(gait: Gait, lift: f64) -> Result<Self, FieldError> {
+        gait.check()?;
+        if gait.legs.len() != LEGS.len() {
+            return Err(FieldError::new(
+                "legs",
+                format!("the hexapod has 6 legs, the gait {}", gait.legs.len()),
+            ));
+        }
+        kinolab_common::error::in_range("stride", gait.stride, 0.0, 0.3)?;
+        let lift = kinolab_common::error::in_range("lift", lift, 0.0, 0.1)?;
+        let model = kinolab_mechanism::catalogue::mechanism("hexapod")?;
+        let feet = LEGS
+            .iter()
+            .map(|leg| model.frame(&format!("{leg}/foot")))
+            .collect::<Result<Vec<_>, _>>()?;
+        let q0 = model.zero_state();
+        let neutral = feet
+            .iter()
+            .map(|f| model.pose(&q0, f).map(|p| p.translation.vector))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Self {
+            model,
+            gait,
+            lift,
+            feet,
+            neutral,
+        })
+    }
+
+    /// Where leg `i`'s foot should be at `tau`, body frame.
+    pub fn target(&self, i: usize, tau: f64) -> Vector3<f64> {
+        let (beta, stride) = (self.gait.duty_factor, self.gait.stride);
+        let sigma = (tau - self.gait.legs[i].phase).rem_euclid(1.0);
+        let n = self.neutral[i];
+        if sigma >= 1.0 - beta {
+            // Stance: from +L/2 back to −L/2 along x, on the ground.
+            let through = (sigma - (1.0 - beta)) / beta;
+            Vector3::new(n.x + stride / 2.0 - stride * through, n.y, n.z)
+        } else {
+            // Swing: forwards again along an arc.
+            let s = sigma / (1.0 - beta);
+            let z = self.lift * (std::f64::consts::PI * s).sin();
+            Vector3::new(n.x - stride / 2.0 + stride * s, n.y, n.z + z)
+        }
+    }
+
+    /// The joint values at `tau`, each leg solved on its own from `seed`
+    /// (the previous instant's values make the motion smooth).
+    pub fn step(&self, tau: f64, seed: &[f64]) -> Result<Step, FieldError> {
+        let tau = kinolab_common::error::finite("tau", tau)?.rem_euclid(1.0);
+        let options = Options {
+            max_iterations: 60,
+            restarts: 2,
+            position_tolerance: 1e-9,
+            rotation_tolerance: 1e-9,
+        };
+        let mut q = seed.to_vec();
+        let mut targets = Vec::with_capacity(6);
+        let mut errors = Vec::with_capacity(6);
+        let mut unreachable = Vec::new();
+        for (i, foot) in self.feet.iter().enumerate() {
+            let target = self.target(i, tau);
+            let solution =
+                self.model
+                    .solve(&[Goal::new(*foot, Target::Position(target))], &q, &options)?;
+            q = solution.q;
+            targets.push([target.x, target.y, target.z]);
+            errors.push(solution.position_error);
+            if solution.position_error > REACHED {
+                unreachable.push(LEGS[i]);
+            }
+        }
+        Ok(Step {
+            tau,
+            q,
+            targets,
+            errors,
+            unreachable,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_foot_lands_where_the_gait_says() {
+        for id in ["hexapod-tripod", "hexapod-wave", "hexapod-tetrapod"] {
+            let mut gait = crate::named(id).unwrap();
+            gait.stride = 0.06;
+            let walker = Walker::new(gait, 0.03).unwrap();
+            let mut q = walker.model.zero_state();
+            for k in 0..24 {
+                let step = walker.step(k as f64 / 24.0, &q).unwrap();
+                assert!(
+                    step.unreachable.is_empty(),
+                    "{id} at {k}: {:?}",
+                    step.errors
+                );
+                for (i, foot) in walker.feet.iter().enumerate() {
+                    let at = walker.model.pose(&step.q, foot).unwrap().translation.vector;
+                    let want = Vector3::from(step.targets[i]);
+                    assert!((at - want).norm() < 1e-6, "{id} leg {i} at {k}");
+                    // Stance feet on the ground, swing feet above it.
+                    let stance = walker.gait.in_stance(i, step.tau);
+                    assert_eq!(want.z.abs() < 1e-12, stance || want.z.abs() < 1e-12);
+                }
+                q = step.q;
+            }
+        }
+    }
+
+    #[test]
+    fn a_stride_too_long_is_reported_not_hidden() {
+        let mut gait = crate::named("hexapod-tripod").unwrap();
+        // 20 cm is still within reach of every foot; 25 cm is not, somewhere.
+        gait.stride = 0.2;
+        let reach = |g: &Gait| {
+            let w = Walker::new(g.clone(), 0.03).unwrap();
+            let q = w.model.zero_state();
+            (0..24).all(|k| w.step(k as f64 / 24.0, &q).unwrap().unreachable.is_empty())
+        };
+        assert!(reach(&gait));
+        gait.stride = 0.25;
+        assert!(!reach(&gait));
+        let mut walker = Walker::new(gait, 0.03).unwrap();
+        // Half a metre each way is beyond a leg 0.3 m long end to end.
+        walker.gait.stride = 1.0;
+        let q = walker.model.zero_state();
+        let step = walker.step(0.0, &q).unwrap();
+        assert_eq!(step.unreachable.len(), 6, "{:?}", step.errors);
+        assert!(step.errors.iter().all(|e| *e > 0.1));
+        assert_eq!(walker.step(f64::NAN, &q).unwrap_err().field, "tau");
+        let mut bad = crate::named("quadruped-crawl").unwrap();
+        bad.stride = 0.05;
+        assert_eq!(Walker::new(bad, 0.03).unwrap_err().field, "legs");
+    }
+}
