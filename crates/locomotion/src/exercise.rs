@@ -79,6 +79,50 @@ pub fn largest_push(table: &crate::balance::CartTable, push: f64) -> Result<Feed
     })
 }
 
+/// "Set the couplings so the oscillators lock into a trot": run `net` from
+/// eight seeded starts for 20 cycles; every run must end with the trot's
+/// lags (LF and RH together, RF and LH half a cycle later) within 0.01.
+pub fn lock_trot(net: &crate::network::Network) -> Feedback {
+    if let Err(e) = net.check() {
+        return Feedback::not_yet(e.to_string());
+    }
+    if net.phases.len() != 4 {
+        return Feedback::not_yet("the trot needs four legs");
+    }
+    let trot = [0.0, 0.5, 0.5, 0.0];
+    let duration = 20.0 / net.frequency.max(0.2);
+    let h = 0.002_f64.min(0.02 / net.frequency.max(0.2));
+    let steps = (duration / h).ceil() as usize;
+    for start in 0..8u64 {
+        let theta: Vec<f64> = (0..4)
+            .map(|i| std::f64::consts::TAU * kinolab_common::random::unit_hash(start, i, 11))
+            .collect();
+        let mut s = net.start(&theta);
+        for _ in 0..steps {
+            net.step(&mut s, h);
+        }
+        let lags = net.lags(&s);
+        let worst = lags
+            .iter()
+            .zip(trot)
+            .map(|(l, t)| crate::cpg::cycle_distance(*l, t))
+            .fold(0.0, f64::max);
+        if worst > 0.01 {
+            return Feedback::not_yet(format!(
+                "From start {} the lags end at {} cycles, not the trot's 0, 0.5, 0.5, 0.",
+                start + 1,
+                lags.iter()
+                    .map(|l| fixed(*l, 2))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ));
+        }
+    }
+    Feedback::met(
+        "Solved: from every start the diagonal pairs lock together, half a cycle apart: a trot.",
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -111,5 +155,26 @@ mod tests {
             over.message
         );
         assert_eq!(largest_push(&table, f64::NAN).unwrap_err().field, "push");
+    }
+
+    #[test]
+    fn the_trot_locks_only_with_its_offsets_and_some_coupling() {
+        let net = |gait: &str, w: f64| {
+            let g = crate::named(gait).unwrap();
+            let mut weights = vec![vec![w; 4]; 4];
+            for (i, row) in weights.iter_mut().enumerate() {
+                row[i] = 0.0;
+            }
+            crate::network::Network {
+                model: crate::network::Model::Phase,
+                frequency: 1.0,
+                phases: g.legs.iter().map(|l| l.phase).collect(),
+                weights,
+                mu: 1.0,
+            }
+        };
+        assert!(lock_trot(&net("quadruped-trot", 1.0)).met);
+        assert!(!lock_trot(&net("quadruped-pace", 1.0)).met);
+        assert!(!lock_trot(&net("quadruped-trot", 0.0)).met);
     }
 }

@@ -12,6 +12,7 @@ mod error;
 mod events;
 pub mod exercise;
 pub mod gait;
+pub mod network;
 pub mod report;
 mod stability;
 mod transport;

@@ -134,6 +134,48 @@ pub static WIDGETS: &[WidgetSchema] = &[
         rules: None,
     },
     WidgetSchema {
+        name: "cpg-lab",
+        summary: "four coupled oscillators, one per leg, locking into a gait: dots on circles, editable weights, kicks",
+        params: &[
+            param(
+                "gait",
+                Kind::Choice {
+                    options: &[
+                        "quadruped-crawl",
+                        "quadruped-trot",
+                        "quadruped-pace",
+                        "quadruped-bound",
+                    ],
+                },
+                Some("quadruped-trot"),
+                "the gait whose phase offsets the coupling pulls towards",
+            ),
+            param(
+                "weight",
+                Kind::Number { min: 0.0, max: 5.0 },
+                Some("1"),
+                "every coupling weight w_ij to start with (1/s)",
+            ),
+            param(
+                "model",
+                Kind::Choice {
+                    options: &["phase", "van-der-pol"],
+                },
+                Some("phase"),
+                "phase oscillators or Van der Pol oscillators",
+            ),
+            param(
+                "task",
+                Kind::Choice {
+                    options: &["lock-trot"],
+                },
+                None,
+                "a graded task: `lock-trot` asks for weights and a gait that lock into a trot from eight starts",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
         name: "hexapod-walker",
         summary: "the lab's hexapod walking a gait by per-leg inverse kinematics, with its support polygon and joint angles",
         params: &[

@@ -219,7 +219,11 @@ impl Chassis {
         // rows themselves decides (it also gives the smallest twist when the
         // spins leave some motion free).
         let (twist, determined) = match solve_normal(&rows) {
-            Some(twist) if within(residual_of(&rows, &twist)) => (twist, true),
+            Some((twist, conditioning))
+                if conditioning > WELL_CONDITIONED || within(residual_of(&rows, &twist)) =>
+            {
+                (twist, true)
+            }
             _ => solve_svd(&rows),
         };
         let residual = residual_of(&rows, &twist);
@@ -260,9 +264,12 @@ fn residual_of(rows: &[(Vector3<f64>, f64)], twist: &Vector3<f64>) -> f64 {
         .sqrt()
 }
 
-/// Least squares by AᵀA v = Aᵀb with the 3×3 inverse; `None` when AᵀA is
-/// (nearly) singular.
-fn solve_normal(rows: &[(Vector3<f64>, f64)]) -> Option<Vector3<f64>> {
+/// det(AᵀA) / ‖AᵀA‖³ above this: the normal equations keep enough digits.
+const WELL_CONDITIONED: f64 = 1e-6;
+
+/// Least squares by AᵀA v = Aᵀb with the 3×3 inverse, and det(AᵀA)/‖AᵀA‖³
+/// (how far from singular); `None` when AᵀA is (nearly) singular.
+fn solve_normal(rows: &[(Vector3<f64>, f64)]) -> Option<(Vector3<f64>, f64)> {
     let mut normal = Matrix3::zeros();
     let mut rhs = Vector3::zeros();
     for (row, b) in rows {
@@ -270,10 +277,13 @@ fn solve_normal(rows: &[(Vector3<f64>, f64)]) -> Option<Vector3<f64>> {
         rhs += row * *b;
     }
     let scale = normal.norm();
-    if normal.determinant().abs() <= 1e-12 * scale * scale * scale {
+    let conditioning = normal.determinant().abs() / (scale * scale * scale);
+    if conditioning.is_nan() || conditioning <= 1e-12 {
         return None;
     }
-    normal.try_inverse().map(|inverse| inverse * rhs)
+    normal
+        .try_inverse()
+        .map(|inverse| (inverse * rhs, conditioning))
 }
 
 /// Least squares by the SVD of A itself: the minimum-norm twist, and

@@ -15,6 +15,7 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("leg-events", locomotion::leg_events::create),
     ("support-polygon", locomotion::support_polygon::create),
     ("gait-studio", locomotion::gait_studio::create),
+    ("cpg-lab", locomotion::cpg_lab::create),
     ("hexapod-walker", locomotion::walker::create),
     ("zmp-cart-table", locomotion::zmp::create),
     ("grid-planner", architecture::grid_planner::create),

@@ -183,6 +183,10 @@ fn the_push_exercise_wants_the_capture_limit() {
         &[("task", "largest-push"), ("push", "0.3")],
     ));
     h.run_steps(3);
+    // A push draws the run and its plot (every label must have its glyphs).
+    h.get_by_label("Push").click();
+    h.run_steps(5);
+    h.get_by_label_contains("Caught: the capture point stayed on the foot");
     h.get_by_label("Check").click();
     h.run_steps(2);
     h.get_by_label_contains("Push more");
@@ -197,4 +201,21 @@ fn the_push_exercise_wants_the_capture_limit() {
         h.run_steps(2);
         h.get_by_label_contains(verdict);
     }
+}
+
+#[test]
+fn the_trot_exercise_wants_the_trots_offsets() {
+    let mut h = harness(widget(
+        "cpg-lab",
+        &[("gait", "quadruped-pace"), ("task", "lock-trot")],
+    ));
+    h.run_steps(3);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("not the trot's");
+    h.get_by_label("trot").click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Solved: from every start");
 }

@@ -54,7 +54,7 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
         step: None,
         tau: 0.0,
         playing: true,
-        camera: Camera::new(ViewKind::Orbit, [0.0, 0.0, 0.08], 0.45),
+        camera: Camera::new(ViewKind::Orbit, [0.0, 0.0, 0.08], 0.3),
     };
     w.rebuild();
     Ok(Box::new(w))
@@ -241,7 +241,11 @@ impl HexapodWalker {
         let series = |k: usize| -> PlotPoints<'static> {
             cycle
                 .iter()
-                .map(|s| [s.tau, s.q.get(k).copied().unwrap_or(0.0).to_degrees()])
+                .enumerate()
+                .map(|(n, s)| {
+                    let tau = n as f64 / PLOT_SAMPLES as f64;
+                    [tau, s.q.get(k).copied().unwrap_or(0.0).to_degrees()]
+                })
                 .collect()
         };
         Plot::new(ui.scope_id().with("walker-joints"))

@@ -99,14 +99,14 @@ impl ZmpCartTable {
 
     fn side_view(&self, ui: &mut egui::Ui) {
         let width = ui.available_width();
-        let height = 240.0;
+        let height = 280.0;
         let (response, painter) = ui.allocate_painter(vec2(width, height), Sense::hover());
         let rect = response.rect;
         painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let z = self.setup.height;
-        let view = PlaneView::fit(rect.shrink(12.0), [-0.6, -0.05], [0.9, z + 0.15]);
+        let view = PlaneView::fit(rect.shrink(12.0), [-0.35, -0.08], [0.65, z + 0.12]);
         let ink = ui.visuals().text_color();
-        let ground = [view.to_screen([-0.6, 0.0]), view.to_screen([0.9, 0.0])];
+        let ground = [view.to_screen([-0.35, 0.0]), view.to_screen([0.65, 0.0])];
         painter.line_segment(ground, Stroke::new(1.5, ink.gamma_multiply(0.5)));
         let foot =
             egui::Rect::from_two_pos(view.to_screen([HEEL, 0.03]), view.to_screen([TOE, 0.0]));
@@ -135,12 +135,10 @@ impl ZmpCartTable {
             );
         };
         mark(zmp, theme::good_color(ui), "ZMP", 0.0);
-        mark(
-            wanted.clamp(-0.6, 0.9),
-            theme::warn_color(ui),
-            "capture point",
-            1.0,
-        );
+        if s.is_some() {
+            let at = wanted.clamp(-0.35, 0.65);
+            mark(at, theme::warn_color(ui), "capture point", 1.0);
+        }
         let com_ground: Pos2 = view.to_screen([x, 0.0]);
         painter.line_segment(
             [body, com_ground],
@@ -161,7 +159,7 @@ impl ZmpCartTable {
             .allow_scroll(false)
             .show(ui, |plot| {
                 plot.line(Line::new("x (CoM)", series(&|s| s.x)).width(2.0));
-                plot.line(Line::new("ẋ", series(&|s| s.xd)).width(2.0));
+                plot.line(Line::new("v (CoM speed)", series(&|s| s.xd)).width(2.0));
                 plot.line(Line::new("ZMP", series(&|s| s.zmp)).width(2.0));
                 plot.line(Line::new("toe", series(&|_| TOE)).color(Color32::GRAY));
                 plot.vline(VLine::new("now", self.t).color(Color32::GRAY));
