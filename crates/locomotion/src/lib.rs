@@ -22,5 +22,5 @@ pub use cpg::Cpg;
 pub use error::FieldError;
 pub use events::{MAX_LEGS_EXACT, leg_events, leg_events_f64};
 pub use gait::{Gait, Leg, named, named_ids};
-pub use stability::{Point, Stability, convex_hull, static_stability};
+pub use stability::{Point, Stability, convex_hull, longitudinal_margins, static_stability};
 pub use transport::{STANDARD_GRAVITY, cost_of_transport};

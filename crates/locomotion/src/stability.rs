@@ -121,6 +121,30 @@ pub fn static_stability(com: Point, feet: &[Point]) -> Result<Stability, FieldEr
     })
 }
 
+/// The longitudinal stability margins: how far the support polygon reaches
+/// in front of and behind the centre of mass along the direction of
+/// travel (+x), on the line through the CoM. `None` when the CoM is not
+/// strictly inside a polygon with area.
+pub fn longitudinal_margins(com: Point, feet: &[Point]) -> Option<(f64, f64)> {
+    let polygon = convex_hull(feet);
+    let n = polygon.len();
+    let inside = n >= 3 && (0..n).all(|i| cross(polygon[i], polygon[(i + 1) % n], com) > 0.0);
+    if !inside {
+        return None;
+    }
+    // Where the line y = com.y crosses each edge.
+    let crossings = (0..n).filter_map(|i| {
+        let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+        let (lo, hi) = if a[1] <= b[1] { (a, b) } else { (b, a) };
+        (lo[1] <= com[1] && com[1] <= hi[1] && hi[1] > lo[1])
+            .then(|| lo[0] + (com[1] - lo[1]) / (hi[1] - lo[1]) * (hi[0] - lo[0]))
+    });
+    let (front, rear) = crossings.fold((f64::NEG_INFINITY, f64::INFINITY), |(f, r), x| {
+        (f.max(x), r.min(x))
+    });
+    (front.is_finite() && rear.is_finite()).then(|| (front - com[0], com[0] - rear))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -141,5 +165,20 @@ mod tests {
             convex_hull(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]),
             vec![[0.0, 0.0], [2.0, 2.0]]
         );
+    }
+
+    #[test]
+    fn longitudinal_margins_reach_front_and_back() {
+        // A rectangle 0.6 long and 0.4 wide; the CoM 0.1 ahead of centre.
+        let feet = [[0.3, 0.2], [0.3, -0.2], [-0.3, 0.2], [-0.3, -0.2]];
+        let (front, rear) = longitudinal_margins([0.1, 0.05], &feet).unwrap();
+        assert!((front - 0.2).abs() < 1e-12 && (rear - 0.4).abs() < 1e-12);
+        // A triangle: the hind edge slants, so the rear reach depends on y.
+        let tri = [[0.3, 0.0], [-0.3, 0.3], [-0.3, -0.3]];
+        let (front, rear) = longitudinal_margins([0.0, 0.1], &tri).unwrap();
+        // The upper edge from (0.3, 0) to (−0.3, 0.3) has x = 0.3 − 2y there: 0.1.
+        assert!((front - 0.1).abs() < 1e-12 && (rear - 0.3).abs() < 1e-12);
+        assert_eq!(longitudinal_margins([1.0, 0.0], &feet), None);
+        assert_eq!(longitudinal_margins([0.0, 0.0], &feet[..2]), None);
     }
 }

@@ -427,6 +427,15 @@ impl LabWidget for GaitStudio {
         let margin = now.margin.map_or("no foot down".to_owned(), |m| {
             format!("margin {} cm", fixed(m * 100.0, 1))
         });
+        // How far the polygon reaches ahead of and behind the CoM.
+        let margin = match kinolab_locomotion::longitudinal_margins(gait.com, &now.feet) {
+            Some((front, rear)) => format!(
+                "{margin}; the polygon reaches {} cm ahead and {} cm behind the CoM",
+                fixed(front * 100.0, 1),
+                fixed(rear * 100.0, 1)
+            ),
+            None => margin,
+        };
         ui.label(
             RichText::new(format!(
                 "At τ = {}: {} feet down, {margin}.",
