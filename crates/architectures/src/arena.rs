@@ -188,7 +188,6 @@ impl Arena {
             .collect();
         let settings = Settings {
             body: body.clone(),
-            cell: setup.cell,
             planning_cost: setup.planning_cost,
         };
         let entrants = kinds

@@ -105,19 +105,15 @@ impl Cpg {
         Ok(steps as usize)
     }
 
-    /// dθ/dt at `theta`.
+    /// dθ/dt at `theta`: every pair coupled with the one weight.
     fn rates(&self, theta: &[f64], out: &mut [f64]) {
-        let omega = TAU * self.frequency;
-        for (i, rate) in out.iter_mut().enumerate() {
-            let mut coupling = 0.0;
-            for (j, &tj) in theta.iter().enumerate() {
-                if j != i {
-                    let psi = TAU * (self.target_phases[i] - self.target_phases[j]);
-                    coupling += (tj - theta[i] - psi).sin();
-                }
-            }
-            *rate = omega + self.weight * coupling;
-        }
+        phase_rates(
+            self.frequency,
+            &self.target_phases,
+            |_, _| self.weight,
+            theta,
+            out,
+        );
     }
 
     /// Integrate from θ(0) to `duration` by RK4 (the last step shortened to
@@ -156,6 +152,27 @@ impl Cpg {
             locked,
             steps,
         })
+    }
+}
+
+/// The phase oscillators' law, the one place it is written:
+/// dθᵢ/dt = 2πν + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ), ψᵢⱼ = 2π(φᵢ − φⱼ).
+pub(crate) fn phase_rates(
+    frequency: f64,
+    phases: &[f64],
+    weight: impl Fn(usize, usize) -> f64,
+    theta: &[f64],
+    out: &mut [f64],
+) {
+    for (i, rate) in out.iter_mut().enumerate() {
+        let pull: f64 = (0..theta.len())
+            .filter(|&j| j != i)
+            .map(|j| {
+                let psi = TAU * (phases[i] - phases[j]);
+                weight(i, j) * (theta[j] - theta[i] - psi).sin()
+            })
+            .sum();
+        *rate = TAU * frequency + pull;
     }
 }
 

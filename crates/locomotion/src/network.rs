@@ -102,13 +102,13 @@ impl Network {
         let w = self.omega();
         match self.model {
             Model::Phase => {
-                for i in 0..n {
-                    let pull: f64 = (0..n)
-                        .filter(|&j| j != i)
-                        .map(|j| self.weights[i][j] * (s[j] - s[i] - self.psi(i, j)).sin())
-                        .sum();
-                    out[i] = w + pull;
-                }
+                crate::cpg::phase_rates(
+                    self.frequency,
+                    &self.phases,
+                    |i, j| self.weights[i][j],
+                    s,
+                    out,
+                );
             }
             Model::VanDerPol => {
                 let (x, v) = s.split_at(n);

@@ -60,12 +60,10 @@ impl Architecture {
     }
 }
 
-/// What the robots share: their body, map resolution and planning cost.
+/// What the robots share: their body and the planning cost.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
     pub body: Body,
-    /// The map's cell side, m.
-    pub cell: f64,
     /// Simulated planning time per expanded cell, s.
     pub planning_cost: f64,
 }
