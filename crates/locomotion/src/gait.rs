@@ -132,6 +132,14 @@ impl Gait {
         }
     }
 
+    /// The body's speed, m/s, when one cycle takes `period` seconds: each
+    /// foot slides back a stride `L` while it stands for `βT`, so
+    /// `v = L / (βT)`.
+    pub fn speed(&self, period: f64) -> Result<f64, FieldError> {
+        let period = kinolab_common::error::positive("period", period)?;
+        Ok(self.stride / (self.duty_factor * period))
+    }
+
     /// `n` instants at τ = (k + ½)/n.
     pub fn sample(&self, n: usize) -> Vec<Instant> {
         (0..n)
@@ -140,10 +148,12 @@ impl Gait {
     }
 }
 
-/// The named gaits of the reference sheet: (id, duty factor, legs as
-/// (name, x, y, lift-off phase)). Quadruped feet at (±0.3, ±0.2) m, hexapod
-/// feet at x = 0.3, 0, −0.3 m and y = ±0.25 m; stride 0.2 m.
-const NAMED: [(&str, f64, &[LegRow]); 7] = [
+/// The named gaits: (id, duty factor, legs as (name, x, y, lift-off
+/// phase)). Quadruped feet at (±0.3, ±0.2) m, hexapod feet at x = 0.3, 0,
+/// −0.3 m and y = ±0.25 m; stride 0.2 m. All but the last two are the
+/// reference sheet's; the ripple and the transverse gallop come from the
+/// gait literature (Hildebrand's footfall patterns) and are marked so.
+const NAMED: [(&str, f64, &[LegRow]); 9] = [
     ("quadruped-crawl", 0.75, &QUADRUPED_CRAWL),
     (
         "quadruped-trot",
@@ -189,6 +199,25 @@ const NAMED: [(&str, f64, &[LegRow]); 7] = [
         "hexapod-tetrapod",
         2.0 / 3.0,
         &hexapod([2.0 / 3.0, 1.0 / 3.0, 0.0, 1.0 / 3.0, 0.0, 2.0 / 3.0]),
+    ),
+    // Beyond the sheet: a back-to-front wave on each side, the two sides
+    // half a cycle apart, so one leg per side swings at any instant.
+    (
+        "hexapod-ripple",
+        2.0 / 3.0,
+        &hexapod([2.0 / 3.0, 1.0 / 3.0, 0.0, 1.0 / 6.0, 5.0 / 6.0, 0.5]),
+    ),
+    // Beyond the sheet: the transverse gallop, hind pair then fore pair,
+    // each pair's feet a tenth of a cycle apart, then a flight.
+    (
+        "quadruped-gallop",
+        0.3,
+        &[
+            ("LF", 0.3, 0.2, 0.4),
+            ("RF", 0.3, -0.2, 0.5),
+            ("LH", -0.3, 0.2, 0.0),
+            ("RH", -0.3, -0.2, 0.1),
+        ],
     ),
 ];
 
@@ -320,10 +349,53 @@ mod tests {
             g.check().unwrap();
             let m = min_margin(&g.sample(600));
             let stable = m.is_some_and(|m| m > 0.0);
-            let dynamic = ["quadruped-trot", "quadruped-pace", "quadruped-bound"].contains(&id);
+            let dynamic = [
+                "quadruped-trot",
+                "quadruped-pace",
+                "quadruped-bound",
+                "quadruped-gallop",
+            ]
+            .contains(&id);
             assert_eq!(stable, !dynamic, "{id}: {m:?}");
         }
         assert!(named("biped-hop").is_none());
+    }
+
+    #[test]
+    fn the_ripple_keeps_four_feet_down_and_the_gallop_flies() {
+        let ripple = named("hexapod-ripple").unwrap();
+        for s in ripple.sample(600) {
+            assert_eq!(s.stance.len(), 4, "{}", s.tau);
+            // One leg per side in the air.
+            let left = s.stance.iter().filter(|&&i| i < 3).count();
+            assert_eq!(left, 2, "{}", s.tau);
+        }
+        // The gallop's feet land hind, hind, fore, fore (LH 0.7, RH 0.8,
+        // LF 0.1, RF 0.2) and it flies from RF's lift-off at 0.5 to LH's
+        // touch-down at 0.7: a fifth of the cycle with no foot down.
+        let gallop = named("quadruped-gallop").unwrap();
+        let samples = gallop.sample(1000);
+        let airborne: Vec<f64> = samples
+            .iter()
+            .filter(|s| s.stance.is_empty())
+            .map(|s| s.tau)
+            .collect();
+        assert_eq!(airborne.len(), 200);
+        assert!(airborne.iter().all(|t| (0.5..0.7).contains(t)));
+        assert!(min_margin(&samples).is_none());
+    }
+
+    #[test]
+    fn speed_is_stride_over_stance_time() {
+        // The lesson's example: L = 0.2 m, β = 3/4, T = 2 s → 0.1333 m/s.
+        let v = crawl(0.75).speed(2.0).unwrap();
+        assert!((v - 0.2 / 1.5).abs() < 1e-12);
+        // A stance foot moves at −v in the body frame.
+        let g = crawl(0.75);
+        let (t0, t1) = (0.5, 0.6);
+        let dx = g.foot(2, t1).unwrap()[0] - g.foot(2, t0).unwrap()[0];
+        assert!((dx / ((t1 - t0) * 2.0) + v).abs() < 1e-12);
+        assert_eq!(g.speed(0.0).unwrap_err().field, "period");
     }
 
     #[test]

@@ -1,7 +1,8 @@
 //! Legged locomotion, computed: how many ways legs can lift and land, when
 //! a standing robot is statically stable, how a periodic gait moves its
 //! feet and keeps (or loses) its balance through the cycle, how coupled
-//! oscillators settle into a gait, and how efficiently anything moves.
+//! oscillators settle into a gait, which gait suits a speed, and how
+//! efficiently anything moves.
 //!
 //! The geometry is small and exact enough to write out: a monotone-chain
 //! convex hull and point-to-segment distances.
@@ -14,6 +15,7 @@ pub mod exercise;
 pub mod gait;
 pub mod network;
 pub mod report;
+pub mod speed;
 mod stability;
 mod transport;
 pub mod walker;
@@ -23,4 +25,4 @@ pub use error::FieldError;
 pub use events::{MAX_LEGS_EXACT, leg_events, leg_events_f64};
 pub use gait::{Gait, Leg, named, named_ids};
 pub use stability::{Point, Stability, convex_hull, longitudinal_margins, static_stability};
-pub use transport::{STANDARD_GRAVITY, cost_of_transport};
+pub use transport::{STANDARD_GRAVITY, cost_of_transport, cost_of_transport_at_speed};

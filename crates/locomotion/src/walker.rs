@@ -142,7 +142,12 @@ mod tests {
 
     #[test]
     fn every_foot_lands_where_the_gait_says() {
-        for id in ["hexapod-tripod", "hexapod-wave", "hexapod-tetrapod"] {
+        for id in [
+            "hexapod-tripod",
+            "hexapod-wave",
+            "hexapod-tetrapod",
+            "hexapod-ripple",
+        ] {
             let mut gait = crate::named(id).unwrap();
             gait.stride = 0.06;
             let walker = Walker::new(gait, 0.03).unwrap();

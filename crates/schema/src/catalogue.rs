@@ -108,6 +108,8 @@ pub static WIDGETS: &[WidgetSchema] = &[
                         "hexapod-tripod",
                         "hexapod-wave",
                         "hexapod-tetrapod",
+                        "hexapod-ripple",
+                        "quadruped-gallop",
                     ],
                 },
                 Some("quadruped-crawl"),
@@ -145,10 +147,17 @@ pub static WIDGETS: &[WidgetSchema] = &[
                         "quadruped-trot",
                         "quadruped-pace",
                         "quadruped-bound",
+                        "quadruped-gallop",
                     ],
                 },
                 Some("quadruped-trot"),
                 "the gait whose phase offsets the coupling pulls towards",
+            ),
+            param(
+                "speed",
+                Kind::Number { min: 0.2, max: 5.0 },
+                None,
+                "start with the speed (m/s) choosing the gait through the Froude number, for legs and stride 0.5 m long",
             ),
             param(
                 "weight",
@@ -182,7 +191,12 @@ pub static WIDGETS: &[WidgetSchema] = &[
             param(
                 "gait",
                 Kind::Choice {
-                    options: &["hexapod-tripod", "hexapod-wave", "hexapod-tetrapod"],
+                    options: &[
+                        "hexapod-tripod",
+                        "hexapod-wave",
+                        "hexapod-tetrapod",
+                        "hexapod-ripple",
+                    ],
                 },
                 Some("hexapod-tripod"),
                 "the gait to start with",

@@ -1,7 +1,9 @@
 //! The CPG lab: four coupled oscillators, one per leg, drawn as dots on
 //! circles; edit the coupling weights, pick the gait whose phase offsets
 //! they pull towards, kick the phases, and watch the lags converge while
-//! the feet below step in the pattern the oscillators make.
+//! the feet below step in the pattern the oscillators make. With the speed
+//! switch on, a speed slider picks the gait through the Froude number and
+//! sets the frequency, so the network changes gait on the move.
 
 use egui::{RichText, Sense, Stroke, vec2};
 use egui_plot::{Legend, Line, Plot, PlotPoints};
@@ -9,18 +11,24 @@ use kinolab_common::Feedback;
 use kinolab_common::display::fixed;
 use kinolab_common::random::unit_hash;
 use kinolab_locomotion::network::{Model, Network, State};
+use kinolab_locomotion::speed::quadruped_pace;
 use serde::{Deserialize, Serialize};
 
 use crate::widget::{LabWidget, Params, feedback_ui};
 use crate::{link, theme};
 
 const LEGS: [&str; 4] = ["LF", "RF", "LH", "RH"];
-const GAITS: [&str; 4] = [
+const GAITS: [&str; 5] = [
     "quadruped-crawl",
     "quadruped-trot",
     "quadruped-pace",
     "quadruped-bound",
+    "quadruped-gallop",
 ];
+/// The walker the speed switch imagines: leg length and stride, m.
+const LEG: f64 = 0.5;
+const STRIDE: f64 = 0.5;
+const SPEEDS: std::ops::RangeInclusive<f64> = 0.2..=5.0;
 /// Integration step, s, and steps per frame at most.
 const DT: f64 = 0.002;
 /// Seconds of lag history kept for the plot.
@@ -32,6 +40,9 @@ struct Setup {
     weights: [[f64; 4]; 4],
     frequency: f64,
     van_der_pol: bool,
+    /// Some(v): the speed picks the gait and the frequency.
+    #[serde(default)]
+    speed: Option<f64>,
 }
 
 struct CpgLab {
@@ -51,12 +62,14 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     for (i, row) in weights.iter_mut().enumerate() {
         row[i] = 0.0;
     }
-    let setup = Setup {
+    let mut setup = Setup {
         gait: p.choice("gait").unwrap_or("quadruped-trot").to_owned(),
         weights,
         frequency: 1.0,
         van_der_pol: p.choice("model") == Some("van-der-pol"),
+        speed: p.number("speed"),
     };
+    follow_speed(&mut setup);
     let mut lab = CpgLab {
         initial: setup.clone(),
         setup,
@@ -74,6 +87,15 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     };
     lab.kick();
     Ok(Box::new(lab))
+}
+
+/// With the speed switch on, take the gait and frequency the speed asks for.
+fn follow_speed(s: &mut Setup) {
+    let Some(v) = s.speed else { return };
+    if let Ok(pace) = quadruped_pace(v, LEG, STRIDE) {
+        s.gait = pace.gait.name;
+        s.frequency = pace.frequency;
+    }
 }
 
 /// The network the set-up describes.
@@ -127,15 +149,18 @@ impl CpgLab {
 
     fn controls(&mut self, ui: &mut egui::Ui) {
         let before = self.setup.clone();
-        ui.horizontal_wrapped(|ui| {
-            ui.label("pull towards:");
-            for g in GAITS {
-                ui.selectable_value(
-                    &mut self.setup.gait,
-                    g.to_owned(),
-                    g.trim_start_matches("quadruped-"),
-                );
-            }
+        self.speed_controls(ui);
+        ui.add_enabled_ui(self.setup.speed.is_none(), |ui| {
+            ui.horizontal_wrapped(|ui| {
+                ui.label("pull towards:");
+                for g in GAITS {
+                    ui.selectable_value(
+                        &mut self.setup.gait,
+                        g.to_owned(),
+                        g.trim_start_matches("quadruped-"),
+                    );
+                }
+            });
         });
         ui.horizontal_wrapped(|ui| {
             ui.selectable_value(&mut self.setup.van_der_pol, false, "phase oscillators");
@@ -148,7 +173,10 @@ impl CpgLab {
                 self.kick();
             }
         });
-        ui.add(egui::Slider::new(&mut self.setup.frequency, 0.2..=3.0).text("frequency ν (Hz)"));
+        ui.add_enabled(
+            self.setup.speed.is_none(),
+            egui::Slider::new(&mut self.setup.frequency, 0.2..=3.0).text("frequency ν (Hz)"),
+        );
         ui.label("Coupling weights w (1/s): row i is pulled by column j");
         egui::Grid::new(ui.scope_id().with("weights")).show(ui, |ui| {
             ui.label("");
@@ -179,6 +207,28 @@ impl CpgLab {
         }
         if self.setup != before {
             self.feedback = None;
+        }
+    }
+
+    /// The speed switch, the speed slider and what the speed implies.
+    fn speed_controls(&mut self, ui: &mut egui::Ui) {
+        let mut on = self.setup.speed.is_some();
+        ui.checkbox(&mut on, "speed picks the gait (legs and stride 0.5 m)");
+        if !on {
+            self.setup.speed = None;
+            return;
+        }
+        let mut v = self.setup.speed.unwrap_or(1.0);
+        ui.add(egui::Slider::new(&mut v, SPEEDS).text("speed v (m/s)"));
+        self.setup.speed = Some(v);
+        follow_speed(&mut self.setup);
+        if let Ok(pace) = quadruped_pace(v, LEG, STRIDE) {
+            ui.label(format!(
+                "Fr = v²/(g l) = {} → {}, ν = βv/L = {} Hz",
+                fixed(pace.froude, 2),
+                pace.gait.name.trim_start_matches("quadruped-"),
+                fixed(pace.frequency, 2)
+            ));
         }
     }
 
@@ -289,7 +339,8 @@ impl LabWidget for CpgLab {
     fn restore(&mut self, state: &str) {
         if let Some(s) = link::decode::<Setup>(state)
             && GAITS.contains(&s.gait.as_str())
-            && (0.2..=3.0).contains(&s.frequency)
+            && (0.2..=5.0).contains(&s.frequency)
+            && s.speed.is_none_or(|v| SPEEDS.contains(&v))
             && s.weights.iter().flatten().all(|w| (0.0..=5.0).contains(w))
         {
             self.setup = s;

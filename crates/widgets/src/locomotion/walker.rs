@@ -14,7 +14,12 @@ use crate::draw::scene3d::{Camera, ViewKind, draw_capsule, draw_grid};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
-const GAITS: [&str; 3] = ["hexapod-tripod", "hexapod-wave", "hexapod-tetrapod"];
+const GAITS: [&str; 4] = [
+    "hexapod-tripod",
+    "hexapod-wave",
+    "hexapod-tetrapod",
+    "hexapod-ripple",
+];
 /// Instants per cycle in the joint plot.
 const PLOT_SAMPLES: usize = 60;
 
