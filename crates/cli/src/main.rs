@@ -5,6 +5,7 @@
 //! field; nothing ever prints a panic or a backtrace.
 
 mod behaviour;
+mod components;
 mod control;
 mod input;
 mod legs;
@@ -213,6 +214,14 @@ enum Command {
         #[arg(long, default_value_t = 1)]
         every: usize,
     },
+    /// Run a system of components (send, query, push, event and wiring patterns) on a simulated clock; print every message and the final state.
+    Components {
+        /// A system file (`*.system.json`, see the README), or `example:<id>` (`out-of-order`, `newest-vs-timed`, `events`, `robot`).
+        system: PathBuf,
+        /// Seconds of simulated time to run (the file's `until` when left out).
+        #[arg(long, allow_hyphen_values = true)]
+        until: Option<f64>,
+    },
     /// Check lesson files (Markdown with front-matter, widgets, quizzes).
     Lessons {
         /// A lessons folder to check; the embedded lessons when omitted.
@@ -380,6 +389,7 @@ fn run(command: Command) -> Result<Value, Failure> {
                 every,
             },
         ),
+        Command::Components { system, until } => components::components(&system, until),
         Command::Lessons { dir } => check_lessons(dir),
     }
 }

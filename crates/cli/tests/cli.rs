@@ -915,3 +915,42 @@ fn arena_runs_each_architecture_and_scores_it() {
         "--duration",
     );
 }
+
+#[test]
+fn components_prints_the_trace_and_the_final_state() {
+    let path = robot_file(
+        "out-of-order.system.json",
+        include_str!("../../components/systems/out-of-order.system.json"),
+    );
+    let v = ok(&["components", &path]);
+    let trace = v["trace"].as_array().unwrap();
+    // Two requests, then their answers the other way round.
+    let answers: Vec<&str> = trace
+        .iter()
+        .filter(|r| r["kind"] == "answer")
+        .map(|r| r["summary"].as_str().unwrap())
+        .collect();
+    assert_eq!(answers, ["Number 16.0", "Number 9.0", "Number 25.0"]);
+    let first = &trace.iter().find(|r| r["kind"] == "request").unwrap();
+    assert_eq!(first["port"], "client.ask");
+    assert_eq!(first["service"], "solver.compute");
+    assert_eq!(first["pattern"], "query");
+    assert!(
+        (first["delivered"].as_f64().unwrap() - first["sent"].as_f64().unwrap() - 0.02).abs()
+            < 1e-9
+    );
+    assert_eq!(v["counts"]["messages"], 6);
+    assert_eq!(v["complete"], true);
+    // `--until` cuts the run: at 0.2 s the answers are still being worked on.
+    let short = ok(&["components", &path, "--until", "0.2"]);
+    assert_eq!(short["counts"]["delivered"], 2);
+    let robot = ok(&["components", "example:robot", "--until", "3"]);
+    assert_eq!(robot["robot"][0], 1.0);
+    fails_with(&["components", &path, "--until", "-1"], "--until");
+    fails_with(&["components", "example:nowhere"], "no example system");
+    let bad = robot_file(
+        "bad.system.json",
+        r#"{"components": [{"name": "s", "kind": "server", "params": {"work": []}}]}"#,
+    );
+    fails_with(&["components", &bad], "components[0].params.work");
+}

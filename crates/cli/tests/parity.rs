@@ -300,6 +300,14 @@ fn gait_cpg_and_plan_reports_match() {
         )),
         "arena"
     );
+    assert_same!(
+        cli(&["components", "example:events", "--until", "2.5"]),
+        api_ok(kinolab_js::architecture_api::components(
+            Value::String("example:events".into()),
+            Some(2.5)
+        )),
+        "components"
+    );
 }
 
 fn api_ok(reply: api::Reply) -> Value {

@@ -8,7 +8,7 @@ use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
 use crate::seeds::Seeds;
 
 /// Every command the generators cover, with its share of the cases.
-pub const COMMANDS: [(&str, u32); 18] = [
+pub const COMMANDS: [(&str, u32); 19] = [
     ("leg-events", 2),
     ("stability", 4),
     ("analyze", 8),
@@ -26,6 +26,7 @@ pub const COMMANDS: [(&str, u32); 18] = [
     ("cpg", 5),
     ("plan", 6),
     ("arena", 3),
+    ("components", 4),
     ("usage", 4),
 ];
 
@@ -112,6 +113,7 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str) -> Case {
         }
         "plan" => plan_case(&mut g, seeds),
         "arena" => arena_case(&mut g, seeds),
+        "components" => components_case(&mut g, seeds),
         _ => usage_case(&mut g),
     }
     g.case
@@ -340,6 +342,19 @@ fn arena_case(g: &mut Gen<'_>, seeds: &Seeds) {
     if g.dice.chance(0.5) {
         let every = g.pick_text(&["1", "10", "0", "1000000"]);
         g.option("--every", &every);
+    }
+}
+
+fn components_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    if g.dice.chance(0.1) {
+        let id = g.pick_text(&["robot", "events", "out-of-order", "nowhere", ""]);
+        g.arg(&format!("example:{id}"));
+    } else {
+        g.file_arg(&seeds.systems, &[], "lab.system.json");
+    }
+    if g.dice.chance(0.6) {
+        let until = g.pick_text(&["0", "1", "30", "600", "601", "-1", "nan", "1e308"]);
+        g.option("--until", &until);
     }
 }
 

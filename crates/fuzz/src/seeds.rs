@@ -16,6 +16,7 @@ pub struct Seeds {
     pub lessons: Vec<String>,
     pub gaits: Vec<String>,
     pub cpgs: Vec<String>,
+    pub systems: Vec<String>,
     /// Catalogue ids, for `catalogue:<id>` arguments.
     pub robot_ids: Vec<String>,
     pub model_ids: Vec<String>,
@@ -89,6 +90,7 @@ impl Seeds {
                 .map(|g| gait_json(&g))
                 .collect(),
             cpgs: vec![CPG.to_owned()],
+            systems: files_in(&root.join("crates/components/systems"), ".system.json"),
             gait_ids: kinolab_locomotion::named_ids().map(str::to_owned).collect(),
             world_ids: kinolab_world::catalogue::WORLDS
                 .iter()

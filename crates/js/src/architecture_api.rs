@@ -31,3 +31,18 @@ pub fn routes(feeds: Value) -> Reply {
         kinolab_common::error::from_json(&feeds.to_string()).map_err(text)?;
     reply(&kinolab_architectures::routes::Wiring { feeds }.report())
 }
+
+/// `kinolab components`: a system file (object, JSON text, or
+/// `example:<id>`) run until `until` s (the file's when `None`).
+pub fn components(system: Value, until: Option<f64>) -> Reply {
+    let text_of = match system {
+        Value::String(json) => json,
+        other => other.to_string(),
+    };
+    let system = match text_of.strip_prefix("example:") {
+        Some(id) => kinolab_components::system::example(id),
+        None => kinolab_components::System::from_json(&text_of),
+    }
+    .map_err(text)?;
+    reply(&system.run(until).map_err(text)?)
+}

@@ -296,6 +296,18 @@ pub fn arena(world: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     ))
 }
 
+/// What `kinolab components` prints: `{ name, seed, until, trace,
+/// components, counts, quiet_ports, robot?, complete }` for a system file
+/// (object, JSON text, or `"example:<id>"`), run until `until` seconds (the
+/// file's `until` when undefined).
+#[wasm_bindgen]
+pub fn components(system: JsValue, until: Option<f64>) -> Result<JsValue, JsError> {
+    to_js(architecture_api::components(
+        from_js("system", system)?,
+        until,
+    ))
+}
+
 /// Sensing routes: `{ routes, paradigm }` for `feeds[sensor][function]`.
 #[wasm_bindgen]
 pub fn routes(feeds: JsValue) -> Result<JsValue, JsError> {

@@ -226,3 +226,16 @@ fn the_architecture_arena_through_the_js_api() {
         "hierarchical"
     );
 }
+
+#[wasm_bindgen_test]
+fn components_run_through_the_js_api() {
+    let r = kinolab_js::components(JsValue::from_str("example:out-of-order"), None).unwrap();
+    let counts = get(&r, "counts");
+    assert_eq!(get(&counts, "messages").as_f64(), Some(6.0));
+    assert_eq!(get(&r, "complete").as_bool(), Some(true));
+    let robot = kinolab_js::components(JsValue::from_str("example:robot"), Some(40.0)).unwrap();
+    let pose = get(&robot, "robot");
+    assert!((get(&pose, "0").as_f64().unwrap() - 9.0).abs() < 0.3);
+    let bad = parse(r#"{ "components": [] }"#);
+    assert!(kinolab_js::components(bad, None).is_err());
+}
