@@ -10,6 +10,7 @@ use std::hint::black_box;
 
 pub mod architecture;
 pub mod behaviour;
+pub mod components;
 pub mod mechanism;
 #[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
 pub mod reference;
@@ -301,6 +302,18 @@ pub const KERNELS: &[Kernel] = &[
         name: "arena_frame_100_robots",
         run: behaviour::arena_frame,
     },
+    Kernel {
+        name: "components_10k_messages",
+        run: components::messages_10k,
+    },
+    Kernel {
+        name: "components_robot_system_10s",
+        run: components::robot_10s,
+    },
+    Kernel {
+        name: "component_lab_frame_20_components",
+        run: components::frame_20,
+    },
 ];
 
 /// The reference implementation's kernels (native only).
@@ -381,6 +394,15 @@ mod tests {
             let error = run_named("hexapod_walker_frame", 1);
             assert!((0.0..1e-6).contains(&error), "{error}");
         }
+        // The maze path winds: longer than the diagonal, as long as
+        // Ten subscribers of ten publishers changing every 10 ms for 10 s:
+        // about 10 000 updates, plus the subscriptions.
+        let messages = run_named("components_10k_messages", 1);
+        assert!((9_900.0..10_100.0).contains(&messages), "{messages}");
+        // The robot waits for its rewire at 5 s: after 10 s it has left
+        // its start at x = 1 but is far from the goal at x = 9.
+        let x = run_named("components_robot_system_10s", 1);
+        assert!(x > 1.1 && x < 8.0, "{x}");
         // The maze path winds: longer than the diagonal, as long as
         // Dijkstra's.
         let astar = run_named("astar_200x200", 1);

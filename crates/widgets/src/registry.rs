@@ -8,7 +8,9 @@
 use kinolab_lessons::WidgetSpec;
 
 use crate::widget::{Constructor, LabWidget};
-use crate::{architecture, autonomy, behaviour, control, fields, locomotion, mechanism, wheels};
+use crate::{
+    architecture, autonomy, behaviour, components, control, fields, locomotion, mechanism, wheels,
+};
 
 /// Every widget's constructor, by its schema name.
 pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
@@ -21,6 +23,8 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("grid-planner", architecture::grid_planner::create),
     ("architecture-arena", architecture::arena::create),
     ("sensing-routes", architecture::routes::create),
+    ("component-lab", components::lab::create),
+    ("which-pattern", components::which_pattern::create),
     ("scripted-vs-sensing", autonomy::scripted_vs_sensing::create),
     ("wheel-workbench", wheels::workbench::create),
     ("wheel-drive", wheels::drive::create),

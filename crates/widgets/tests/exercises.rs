@@ -240,3 +240,29 @@ fn the_speed_picks_the_cpgs_gait_through_the_froude_number() {
     h.run_steps(2);
     h.get_by_label_contains("→ gallop, ν = βv/L = 2.40 Hz");
 }
+
+#[test]
+fn the_which_pattern_task_runs_each_choice() {
+    let mut h = harness(widget("which-pattern", &[("task", "match")]));
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("5 of 5 do not work yet");
+}
+
+#[test]
+fn the_wiring_task_is_checked_by_running_the_robot() {
+    let mut h = harness(widget("component-lab", &[("task", "wire-robot")]));
+    h.run_steps(3);
+    h.get_by_label_contains("Click a port");
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Still unwired: planner.map, motion.velocity, sequencer.goal");
+}
+
+#[test]
+fn the_component_lab_plays_on_its_own() {
+    let mut h = harness(widget("component-lab", &[("system", "robot")]));
+    h.run_steps(10);
+    h.get_by_label("Pause");
+}
