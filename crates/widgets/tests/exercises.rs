@@ -263,6 +263,9 @@ fn the_wiring_task_is_checked_by_running_the_robot() {
 #[test]
 fn the_component_lab_plays_on_its_own() {
     let mut h = harness(widget("component-lab", &[("system", "robot")]));
+    h.run_steps(2);
+    // It waits for the learner, then plays on its own.
+    h.get_by_label("Play").click();
     h.run_steps(10);
     h.get_by_label("Pause");
 }

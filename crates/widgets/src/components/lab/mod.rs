@@ -85,7 +85,7 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
         problem: None,
         track: Vec::new(),
         until: base.until,
-        playing: !task,
+        playing: false,
         speed: if small { 1 } else { 2 },
         window: if small { 1.0 } else { 2.0 },
         selected: None,
@@ -358,6 +358,25 @@ impl ComponentLab {
         });
     }
 
+    /// Each component's state and what it says of itself.
+    fn statuses(&self, ui: &mut egui::Ui) {
+        let Some(rt) = self.rt.as_ref() else { return };
+        egui::Grid::new(ui.scope_id().with("statuses"))
+            .num_columns(2)
+            .spacing([12.0, 2.0])
+            .show(ui, |ui| {
+                for c in rt.view() {
+                    ui.label(egui::RichText::new(&c.name).strong().size(12.5));
+                    let state = match &c.waiting_on {
+                        Some(p) => format!("blocked on {p}"),
+                        None => c.state.name().to_owned(),
+                    };
+                    ui.label(egui::RichText::new(format!("{state}: {}", c.status)).size(12.5));
+                    ui.end_row();
+                }
+            });
+    }
+
     fn task_ui(&mut self, ui: &mut egui::Ui) {
         ui.separator();
         ui.label(egui::RichText::new("Task: wire it so the map reaches the planner and the planner drives the base, then check (the core runs it for 40 s).").strong());
@@ -391,6 +410,7 @@ impl LabWidget for ComponentLab {
             ui.label(egui::RichText::new(r).color(crate::theme::warn_color(ui)));
         }
         self.port_panel(ui);
+        self.statuses(ui);
         sequence::show(ui, self);
         if self.task {
             self.task_ui(ui);
