@@ -14,6 +14,8 @@ pub struct QuizState {
     pub choice: Option<usize>,
     pub ticks: Vec<bool>,
     pub typed: String,
+    /// Sorting: the bin picked for each item.
+    pub sorted: Vec<Option<usize>>,
     /// `Some(true)` right, `Some(false)` wrong, `None` not checked yet.
     pub verdict: Option<bool>,
     /// A problem with the input (such as text that is not a number).
@@ -82,6 +84,9 @@ pub fn quiz_ui(
                                     QuizKind::Numeric { .. } => {
                                         "Type a number first, such as 120 or 0.5.".to_owned()
                                     }
+                                    QuizKind::Sort { .. } => {
+                                        "Put every item in a bin first.".to_owned()
+                                    }
                                     _ => "Choose an answer first.".to_owned(),
                                 });
                             }
@@ -107,6 +112,7 @@ pub fn quiz_ui(
                             .size(theme::BODY_SIZE)
                             .color(color),
                     );
+                    sort_feedback(ui, quiz, state, navigate);
                     inline_ui(ui, &quiz.explain, theme::BODY_SIZE, false, navigate);
                 }
             });
@@ -166,6 +172,63 @@ fn answer_controls(
             });
             parse_typed_number(&state.typed).map(Answer::Numeric)
         }
+        QuizKind::Sort { bins, items } => {
+            state.sorted.resize(items.len(), None);
+            ui.label(RichText::new("Put each item in its bin.").small().weak());
+            for (i, item) in items.iter().enumerate() {
+                ui.horizontal_wrapped(|ui| {
+                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
+                    for (b, bin) in bins.iter().enumerate() {
+                        let on = state.sorted[i] == Some(b);
+                        if ui
+                            .selectable_label(on, RichText::new(bin).size(theme::BODY_SIZE))
+                            .clicked()
+                        {
+                            state.sorted[i] = Some(b);
+                            state.verdict = None;
+                        }
+                    }
+                });
+            }
+            state
+                .sorted
+                .iter()
+                .copied()
+                .collect::<Option<Vec<usize>>>()
+                .map(Answer::Sort)
+        }
+    }
+}
+
+/// After a sorting question is checked: each item, right or where it
+/// belongs, with its reason.
+fn sort_feedback(ui: &mut egui::Ui, quiz: &Quiz, state: &QuizState, navigate: &mut Option<Page>) {
+    let QuizKind::Sort { bins, items } = &quiz.kind else {
+        return;
+    };
+    let Some(picks) = state.sorted.iter().copied().collect::<Option<Vec<usize>>>() else {
+        return;
+    };
+    let Ok(marks) = quiz.sort_marks(&Answer::Sort(picks)) else {
+        return;
+    };
+    for ((item, right), _) in items.iter().zip(marks).zip(0..) {
+        ui.horizontal_wrapped(|ui| {
+            let (text, colour) = if right {
+                ("right:".to_owned(), theme::good_color(ui))
+            } else {
+                (
+                    format!("belongs in {}:", bins[item.bin]),
+                    theme::warn_color(ui),
+                )
+            };
+            ui.label(RichText::new(text).color(colour).size(theme::BODY_SIZE));
+            inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
+            if let Some(why) = &item.why {
+                ui.label(RichText::new("·").size(theme::BODY_SIZE));
+                inline_ui(ui, why, theme::BODY_SIZE, false, navigate);
+            }
+        });
     }
 }
 

@@ -11,6 +11,7 @@ use std::hint::black_box;
 pub mod architecture;
 pub mod behaviour;
 pub mod components;
+pub mod design;
 pub mod mechanism;
 #[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
 pub mod reference;
@@ -314,6 +315,14 @@ pub const KERNELS: &[Kernel] = &[
         name: "component_lab_frame_20_components",
         run: components::frame_20,
     },
+    Kernel {
+        name: "ant_walk_size_1",
+        run: design::ant_walk,
+    },
+    Kernel {
+        name: "three_slots_matrix_24",
+        run: design::slots_matrix,
+    },
 ];
 
 /// The reference implementation's kernels (native only).
@@ -394,6 +403,12 @@ mod tests {
             let error = run_named("hexapod_walker_frame", 1);
             assert!((0.0..1e-6).contains(&error), "{error}");
         }
+        // The ant winds across beach 1; 19 of the 24 slot combinations
+        // reach their goal (the car fails in the maze and the office, the
+        // omni with wandering in the office).
+        let t = run_named("ant_walk_size_1", 1);
+        assert!(t > 1.05 && t < 2.0, "{t}");
+        close("three_slots_matrix_24", 19.0, 0.0);
         // The maze path winds: longer than the diagonal, as long as
         // Ten subscribers of ten publishers changing every 10 ms for 10 s:
         // about 10 000 updates, plus the subscriptions.
@@ -403,6 +418,12 @@ mod tests {
         // its start at x = 1 but is far from the goal at x = 9.
         let x = run_named("components_robot_system_10s", 1);
         assert!(x > 1.1 && x < 8.0, "{x}");
+        // The ant winds across beach 1; 19 of the 24 slot combinations
+        // reach their goal (the car fails in the maze and the office, the
+        // omni with wandering in the office).
+        let t = run_named("ant_walk_size_1", 1);
+        assert!(t > 1.05 && t < 2.0, "{t}");
+        close("three_slots_matrix_24", 19.0, 0.0);
         // The maze path winds: longer than the diagonal, as long as
         // Dijkstra's.
         let astar = run_named("astar_200x200", 1);

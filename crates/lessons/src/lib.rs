@@ -24,4 +24,4 @@ pub use document::{Align, Block, Inline, Span, TextStyle, WidgetSpec, plain_text
 pub use error::LessonError;
 pub use front_matter::FrontMatter;
 pub use parse::{parse_inline, parse_lesson};
-pub use quiz::{Answer, AnswerError, Quiz, QuizKind};
+pub use quiz::{Answer, AnswerError, Quiz, QuizKind, SortItem};

@@ -464,10 +464,14 @@ impl<'src> BodyParser<'_, 'src> {
         let question = parse_inline(
             file,
             fence,
-            &raw.question.ok_or_else(|| missing("question"))?,
+            raw.question.as_deref().ok_or_else(|| missing("question"))?,
         )?;
-        let explain = parse_inline(file, fence, &raw.explain.ok_or_else(|| missing("explain"))?)?;
-        let kind_name = raw.kind.ok_or_else(|| missing("kind"))?;
+        let explain = parse_inline(
+            file,
+            fence,
+            raw.explain.as_deref().ok_or_else(|| missing("explain"))?,
+        )?;
+        let kind_name = raw.kind.clone().ok_or_else(|| missing("kind"))?;
         let options = raw
             .options
             .iter()
@@ -518,9 +522,9 @@ impl<'src> BodyParser<'_, 'src> {
                         "a numeric quiz has no options",
                     ));
                 }
-                let (answer, line) = raw.answer.ok_or_else(|| missing("answer"))?;
+                let (answer, line) = raw.answer.clone().ok_or_else(|| missing("answer"))?;
                 let answer = parse_number(file, line, "answer", &answer)?;
-                let tolerance = match raw.tolerance {
+                let tolerance = match raw.tolerance.clone() {
                     Some((t, line)) => {
                         let t = parse_number(file, line, "tolerance", &t)?;
                         if t < 0.0 {
@@ -537,23 +541,103 @@ impl<'src> BodyParser<'_, 'src> {
                 QuizKind::Numeric {
                     answer,
                     tolerance,
-                    unit: raw.unit,
+                    unit: raw.unit.clone(),
                 }
             }
+            "sort" => sort_kind(file, fence, &raw, options.is_empty())?,
             other => {
                 return Err(LessonError::new(
                     file,
                     fence,
-                    format!("unknown quiz kind `{other}` (expected single, multiple or numeric)"),
+                    format!(
+                        "unknown quiz kind `{other}` (expected single, multiple, numeric or sort)"
+                    ),
                 ));
             }
         };
+        if kind_name != "sort" && !raw.items.is_empty() {
+            return Err(LessonError::new(
+                file,
+                raw.items[0].line,
+                "only a `kind: sort` quiz has `- text => bin` items",
+            ));
+        }
         Ok(Quiz {
             question,
             kind,
             explain,
         })
     }
+}
+
+/// A sorting question: 2 to 6 distinct bins, 2 to 20 items each naming one.
+fn sort_kind(
+    file: &str,
+    fence: usize,
+    raw: &crate::quiz::RawQuiz,
+    no_options: bool,
+) -> Result<QuizKind, LessonError> {
+    if !no_options {
+        return Err(LessonError::new(
+            file,
+            fence,
+            "a sorting quiz has items, not `- [ ]` options",
+        ));
+    }
+    let (bins_text, bins_line) = raw
+        .bins
+        .as_ref()
+        .ok_or_else(|| LessonError::new(file, fence, "a sorting quiz needs `bins: A | B | …`"))?;
+    let bins: Vec<String> = bins_text.split('|').map(|b| b.trim().to_owned()).collect();
+    let distinct = bins.iter().collect::<std::collections::BTreeSet<_>>().len() == bins.len();
+    if !(2..=6).contains(&bins.len()) || bins.iter().any(String::is_empty) || !distinct {
+        return Err(LessonError::new(
+            file,
+            *bins_line,
+            "`bins` needs 2 to 6 distinct names separated by `|`",
+        ));
+    }
+    if !(2..=20).contains(&raw.items.len()) {
+        return Err(LessonError::new(
+            file,
+            fence,
+            "a sorting quiz needs 2 to 20 items",
+        ));
+    }
+    let items = raw
+        .items
+        .iter()
+        .map(|item| {
+            let bin = bins.iter().position(|b| *b == item.bin).ok_or_else(|| {
+                LessonError::new(
+                    file,
+                    item.line,
+                    format!(
+                        "`{}` is not one of the bins ({})",
+                        item.bin,
+                        bins.join(", ")
+                    ),
+                )
+            })?;
+            if item.text.is_empty() {
+                return Err(LessonError::new(
+                    file,
+                    item.line,
+                    "a sorting item has no text",
+                ));
+            }
+            Ok(crate::quiz::SortItem {
+                text: parse_inline(file, item.line, &item.text)?,
+                bin,
+                why: item
+                    .why
+                    .as_deref()
+                    .map(|w| parse_inline(file, item.line, w))
+                    .transpose()?,
+            })
+        })
+        .collect::<Result<Vec<_>, LessonError>>()?;
+    Ok(QuizKind::Sort { bins, items })
 }
 
 fn parse_number(file: &str, line: usize, key: &str, text: &str) -> Result<f64, LessonError> {

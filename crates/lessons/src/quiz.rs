@@ -14,7 +14,7 @@ pub struct Quiz {
     pub explain: Inline,
 }
 
-/// The three kinds of question.
+/// The kinds of question.
 #[derive(Debug, Clone, PartialEq)]
 pub enum QuizKind {
     /// Pick the one right option.
@@ -33,6 +33,20 @@ pub enum QuizKind {
         tolerance: f64,
         unit: Option<String>,
     },
+    /// Place every item into one of the named bins.
+    Sort {
+        bins: Vec<String>,
+        items: Vec<SortItem>,
+    },
+}
+
+/// An item of a sorting question: its text, the bin it belongs in, and
+/// why (shown beside it once checked).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SortItem {
+    pub text: Inline,
+    pub bin: usize,
+    pub why: Option<Inline>,
 }
 
 /// A learner's answer.
@@ -41,6 +55,8 @@ pub enum Answer {
     Single(usize),
     Multiple(Vec<bool>),
     Numeric(f64),
+    /// The bin chosen for each item, in order.
+    Sort(Vec<usize>),
 }
 
 /// Why an answer could not be checked.
@@ -96,6 +112,22 @@ impl Quiz {
                 let slack = tolerance + 1e-9 * answer.abs().max(1.0);
                 Ok((value - answer).abs() <= slack)
             }
+            (QuizKind::Sort { .. }, Answer::Sort(_)) => {
+                Ok(self.sort_marks(answer)?.iter().all(|right| *right))
+            }
+            _ => Err(AnswerError::WrongKind),
+        }
+    }
+
+    /// For a sorting question, whether each item is in its bin.
+    pub fn sort_marks(&self, answer: &Answer) -> Result<Vec<bool>, AnswerError> {
+        match (&self.kind, answer) {
+            (QuizKind::Sort { bins, items }, Answer::Sort(picks)) => {
+                if picks.len() != items.len() || picks.iter().any(|p| *p >= bins.len()) {
+                    return Err(AnswerError::OutOfRange);
+                }
+                Ok(items.iter().zip(picks).map(|(i, p)| i.bin == *p).collect())
+            }
             _ => Err(AnswerError::WrongKind),
         }
     }
@@ -104,7 +136,7 @@ impl Quiz {
     pub fn options(&self) -> &[Inline] {
         match &self.kind {
             QuizKind::Single { options, .. } | QuizKind::Multiple { options, .. } => options,
-            QuizKind::Numeric { .. } => &[],
+            QuizKind::Numeric { .. } | QuizKind::Sort { .. } => &[],
         }
     }
 }
@@ -120,6 +152,18 @@ pub(crate) struct RawQuiz {
     pub unit: Option<String>,
     /// Option text and whether it is right.
     pub options: Vec<(String, bool)>,
+    /// Sorting: the bins, and each item as (text, bin name, why, line).
+    pub bins: Option<(String, usize)>,
+    pub items: Vec<SortLine>,
+}
+
+/// A sorting item as written: `- text => bin :: why`.
+#[derive(Debug)]
+pub(crate) struct SortLine {
+    pub text: String,
+    pub bin: String,
+    pub why: Option<String>,
+    pub line: usize,
 }
 
 /// Read a quiz block's lines. `first_line` is the file line of the block's
@@ -152,6 +196,26 @@ pub(crate) fn read_raw(file: &str, body: &str, first_line: usize) -> Result<RawQ
             raw.options.push((text.to_owned(), right));
             continue;
         }
+        if let Some(rest) = line.strip_prefix("- ") {
+            let Some((text, target)) = rest.split_once("=>") else {
+                return Err(LessonError::new(
+                    file,
+                    line_no,
+                    "a sorting item is `- text => bin` (optionally `:: why`)",
+                ));
+            };
+            let (bin, why) = match target.split_once("::") {
+                Some((bin, why)) => (bin, Some(why.trim().to_owned())),
+                None => (target, None),
+            };
+            raw.items.push(SortLine {
+                text: text.trim().to_owned(),
+                bin: bin.trim().to_owned(),
+                why,
+                line: line_no,
+            });
+            continue;
+        }
         let Some((key, value)) = line.split_once(':') else {
             return Err(LessonError::new(
                 file,
@@ -173,12 +237,16 @@ pub(crate) fn read_raw(file: &str, body: &str, first_line: usize) -> Result<RawQ
                 raw.tolerance = Some((value, line_no));
                 continue;
             }
+            "bins" => {
+                raw.bins = Some((value, line_no));
+                continue;
+            }
             other => {
                 return Err(LessonError::new(
                     file,
                     line_no,
                     format!(
-                        "unknown quiz key `{other}` (expected kind, question, explain, answer, tolerance or unit)"
+                        "unknown quiz key `{other}` (expected kind, question, explain, answer, tolerance, unit or bins)"
                     ),
                 ));
             }

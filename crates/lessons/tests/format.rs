@@ -213,7 +213,7 @@ fn unknown_quiz_kind_names_file_and_line() {
         format!("{HEADER}\n```quiz\nkind: essay\nquestion: Why?\nexplain: Because.\n```\n");
     assert_eq!(
         error(&source),
-        "bad.md:9: unknown quiz kind `essay` (expected single, multiple or numeric)"
+        "bad.md:9: unknown quiz kind `essay` (expected single, multiple, numeric or sort)"
     );
 }
 
@@ -331,4 +331,58 @@ fn every_bundled_lesson_parses_and_has_a_quiz() {
             );
         }
     }
+}
+
+#[test]
+fn a_sorting_quiz_grades_every_item() {
+    let blocks = lesson(
+        "```quiz\nkind: sort\nquestion: Sort them.\nbins: EBT | BO | IO\n- Embodiment => EBT\n- AnyMorphology => BO :: a *design* pattern\n- a laser driver => IO\nexplain: Layers.\n```\n",
+    );
+    let Block::Quiz(q) = &blocks[0] else { panic!() };
+    let QuizKind::Sort { bins, items } = &q.kind else {
+        panic!()
+    };
+    assert_eq!(bins, &["EBT", "BO", "IO"]);
+    assert_eq!(items.iter().map(|i| i.bin).collect::<Vec<_>>(), [0, 1, 2]);
+    assert!(items[1].why.is_some() && items[0].why.is_none());
+    assert_eq!(q.check(&Answer::Sort(vec![0, 1, 2])), Ok(true));
+    assert_eq!(q.check(&Answer::Sort(vec![0, 2, 2])), Ok(false));
+    assert_eq!(
+        q.sort_marks(&Answer::Sort(vec![1, 1, 2])),
+        Ok(vec![false, true, true])
+    );
+    assert_eq!(
+        q.check(&Answer::Sort(vec![0, 1])),
+        Err(AnswerError::OutOfRange)
+    );
+    assert_eq!(
+        q.check(&Answer::Sort(vec![0, 1, 3])),
+        Err(AnswerError::OutOfRange)
+    );
+    assert_eq!(q.check(&Answer::Single(0)), Err(AnswerError::WrongKind));
+}
+
+#[test]
+fn malformed_sorting_quizzes_name_the_file_and_line() {
+    let quiz = |body: &str| {
+        format!(
+            "---\ntitle: T\nminutes: 5\nobjectives:\n  - o\n---\n\n```quiz\nkind: sort\nquestion: q\nexplain: e\n{body}```\n"
+        )
+    };
+    // Front matter is 6 lines, a blank, the fence at line 8; body from 12.
+    let e = error(&quiz("bins: A | B\n- x => C\n- y => A\n"));
+    assert!(
+        e.contains(":13:") && e.contains("`C` is not one of the bins"),
+        "{e}"
+    );
+    let e = error(&quiz("bins: A\n- x => A\n- y => A\n"));
+    assert!(e.contains(":12:") && e.contains("2 to 6 distinct"), "{e}");
+    let e = error(&quiz("- x => A\n- y => A\n"));
+    assert!(e.contains("needs `bins"), "{e}");
+    let e = error(&quiz("bins: A | B\n- x goes to A\n- y => A\n"));
+    assert!(e.contains(":13:") && e.contains("`- text => bin`"), "{e}");
+    let e = error(&quiz("bins: A | B\n- [x] x\n- y => A\n"));
+    assert!(e.contains("items, not"), "{e}");
+    let e = error(&quiz("bins: A | B\n- y => A\n"));
+    assert!(e.contains("2 to 20 items"), "{e}");
 }

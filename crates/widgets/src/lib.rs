@@ -27,6 +27,7 @@ pub mod autonomy;
 pub mod behaviour;
 pub mod components;
 pub mod control;
+pub mod design;
 pub mod draw;
 pub mod export;
 pub mod fields;

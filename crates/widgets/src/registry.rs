@@ -9,7 +9,8 @@ use kinolab_lessons::WidgetSpec;
 
 use crate::widget::{Constructor, LabWidget};
 use crate::{
-    architecture, autonomy, behaviour, components, control, fields, locomotion, mechanism, wheels,
+    architecture, autonomy, behaviour, components, control, design, fields, locomotion, mechanism,
+    wheels,
 };
 
 /// Every widget's constructor, by its schema name.
@@ -25,6 +26,10 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("sensing-routes", architecture::routes::create),
     ("component-lab", components::lab::create),
     ("which-pattern", components::which_pattern::create),
+    ("ant-beach", design::ant_beach::create),
+    ("three-slots", design::three_slots::create),
+    ("technology-churn", design::churn::create),
+    ("morphology-builder", design::morphology::create),
     ("scripted-vs-sensing", autonomy::scripted_vs_sensing::create),
     ("wheel-workbench", wheels::workbench::create),
     ("wheel-drive", wheels::drive::create),

@@ -269,3 +269,73 @@ fn the_component_lab_plays_on_its_own() {
     h.run_steps(10);
     h.get_by_label("Pause");
 }
+
+#[test]
+fn the_car_is_fixed_by_its_body_not_its_behaviours() {
+    let mut h = harness(widget("three-slots", &[("task", "fix-the-car")]));
+    h.run_steps(3);
+    h.get_by_label_contains("Did not reach the goal: a car cannot turn tighter");
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("change exactly one slot (you changed 0)");
+    h.get_by_label("wander-when-stuck").click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("still no: a car cannot turn tighter");
+    h.get_by_label("go-and-avoid").click();
+    h.get_by_label("omni").click();
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Solved. the omni with go-and-avoid reached the goal");
+}
+
+#[test]
+fn a_giant_walks_straight_across_the_beach() {
+    let mut h = harness(widget(
+        "ant-beach",
+        &[("task", "nearly-straight"), ("size", "1")],
+    ));
+    h.run_steps(3);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("pebbles still matter");
+    h.get_all_by_label("body size (ant lengths)")
+        .next()
+        .unwrap()
+        .set_value_accesskit(90.0);
+    h.run_steps(2);
+    h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Solved. at size 90 the path is 1.000 times the straight line");
+}
+
+#[test]
+fn the_churn_counts_match_the_two_designs() {
+    let mut h = harness(widget("technology-churn", &[("swap", "SickLaser")]));
+    h.run_steps(2);
+    h.get_by_label_contains("stable design: replacing SickLaser edits 1 class: Configuration");
+    h.get_by_label_contains("naive design: replacing SickLaser edits 4 classes");
+}
+
+#[test]
+fn the_morphology_builder_dissolves_pairs_and_swaps_commands() {
+    let mut h = harness(widget("morphology-builder", &[("mechanism", "planar-3r")]));
+    h.run_steps(2);
+    h.get_by_label_contains("T(from → to): (");
+    h.get_by_label_contains("computed by closed-form planar FK");
+    h.get_by_label_contains("use the plugged-in commands")
+        .click();
+    h.run_steps(2);
+    h.get_by_label_contains("computed by the generic tree walk");
+    h.get_by_label("Pairs: delete the port a pair hangs on")
+        .click();
+    h.run_steps(2);
+    h.get_all_by_label("delete the port")
+        .next()
+        .unwrap()
+        .click();
+    h.run_steps(2);
+    h.get_by_label_contains("No transform: a dissolved pair lies on the path");
+}

@@ -54,6 +54,9 @@ pub struct DiffDrive {
     pub max_wheel_speed: f64,
     /// The body's radius for collisions, m.
     pub radius: f64,
+    /// A car-like limit: it cannot turn tighter than this radius (m), so
+    /// it cannot turn on the spot; 0 for a plain differential drive.
+    pub min_turn_radius: f64,
     /// (v, ω) → (left, right) wheel speeds, forward-positive.
     to_wheels: Matrix2<f64>,
     to_twist: Matrix2<f64>,
@@ -108,9 +111,16 @@ impl DiffDrive {
             wheel_radius,
             max_wheel_speed,
             radius,
+            min_turn_radius: 0.0,
             to_wheels,
             to_twist,
         })
+    }
+
+    /// The same drive steered like a car: no turn tighter than `radius` m.
+    pub fn car_like(mut self, radius: f64) -> Result<Self, FieldError> {
+        self.min_turn_radius = positive("min_turn_radius", radius)?;
+        Ok(self)
     }
 
     /// Left and right wheel speeds (rad/s, forward-positive) for (v, ω).
@@ -201,7 +211,12 @@ impl Body {
             Body::Differential(d) => {
                 let wheels = d.limit_wheels(d.wheel_speeds(command.vx, command.omega));
                 let [v, omega] = d.twist(wheels[0], wheels[1]);
-                Command::unicycle(v, omega)
+                if d.min_turn_radius > 0.0 {
+                    let tightest = v.abs() / d.min_turn_radius;
+                    Command::unicycle(v, omega.clamp(-tightest, tightest))
+                } else {
+                    Command::unicycle(v, omega)
+                }
             }
             Body::Point(p) => {
                 let speed = command.speed();

@@ -1,0 +1,147 @@
+//! Technology churn: the same application designed stably and naively, as
+//! class graphs side by side; replace an industrial object and the classes
+//! whose code must change light up, counted by the core.
+
+use egui::{Align2, Color32, FontId, Pos2, RichText, Sense, Stroke, pos2, vec2};
+use kinolab_design::churn::{Design, Layer, SWAPS, naive, stable};
+
+use crate::theme;
+use crate::widget::{LabWidget, Params};
+
+struct Churn {
+    swap: Option<&'static str>,
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let swap = p
+        .choice("swap")
+        .and_then(|s| SWAPS.iter().find(|(io, _)| *io == s).map(|(io, _)| *io));
+    Ok(Box::new(Churn { swap }))
+}
+
+/// Where each class sits: logic on top, business objects in the middle,
+/// industrial objects at the bottom.
+fn positions(design: &Design, rect: egui::Rect) -> Vec<(&'static str, Pos2)> {
+    let rows = [Layer::Logic, Layer::Bo, Layer::Io];
+    let mut out = Vec::new();
+    for (r, layer) in rows.iter().enumerate() {
+        let names: Vec<&'static str> = design
+            .classes
+            .iter()
+            .filter(|c| c.layer == *layer)
+            .map(|c| c.name)
+            .collect();
+        for (i, name) in names.iter().enumerate() {
+            let x = rect.left() + rect.width() * (i as f32 + 0.5) / names.len().max(1) as f32;
+            let y = rect.top() + 22.0 + r as f32 * (rect.height() - 44.0) / 2.0;
+            out.push((*name, pos2(x, y)));
+        }
+    }
+    out
+}
+
+fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&str>, width: f32) {
+    let (rect, _) = ui.allocate_exact_size(vec2(width, 230.0), Sense::hover());
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+    let at = positions(design, rect.shrink2(vec2(6.0, 6.0)));
+    let pos = |name: &str| at.iter().find(|(n, _)| *n == name).map(|(_, p)| *p);
+    let faint = ui.visuals().weak_text_color();
+    for (user, used) in &design.uses {
+        if let (Some(a), Some(b)) = (pos(user), pos(used)) {
+            let hot = Some(*used) == swapped && edited.contains(user);
+            let stroke = if hot {
+                Stroke::new(2.0, theme::warn_color(ui))
+            } else {
+                Stroke::new(1.0, faint)
+            };
+            painter.line_segment([a, b], stroke);
+        }
+    }
+    let ink = ui.visuals().text_color();
+    for c in &design.classes {
+        let Some(p) = pos(c.name) else { continue };
+        let fill = match c.layer {
+            Layer::Logic => Color32::from_rgb(70, 140, 230).gamma_multiply(0.25),
+            Layer::Bo => Color32::from_rgb(60, 170, 90).gamma_multiply(0.3),
+            Layer::Io => Color32::from_rgb(200, 140, 30).gamma_multiply(0.3),
+        };
+        let font = FontId::proportional(10.5);
+        let size = painter
+            .layout_no_wrap(c.name.to_owned(), font.clone(), ink)
+            .size()
+            + vec2(10.0, 6.0);
+        let r = egui::Rect::from_center_size(p, size);
+        let edge = if edited.contains(&c.name) {
+            Stroke::new(2.5, theme::warn_color(ui))
+        } else if Some(c.name) == swapped {
+            Stroke::new(2.5, Color32::from_rgb(200, 60, 40))
+        } else {
+            Stroke::new(1.0, faint)
+        };
+        painter.rect(r, 4.0, fill, edge, egui::StrokeKind::Inside);
+        painter.text(p, Align2::CENTER_CENTER, c.name, font, ink);
+    }
+}
+
+impl LabWidget for Churn {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Replace:");
+            for (io, what) in SWAPS {
+                if ui
+                    .selectable_label(self.swap == Some(io), io)
+                    .on_hover_text(what)
+                    .clicked()
+                {
+                    self.swap = Some(io);
+                }
+            }
+        });
+        ui.label(
+            RichText::new(
+                "blue: business logic · green: business objects · orange: industrial objects",
+            )
+            .small(),
+        );
+        let designs = [stable(), naive()];
+        let wide = ui.available_width() >= 700.0;
+        let width = if wide {
+            ui.available_width() / 2.0 - 8.0
+        } else {
+            ui.available_width()
+        };
+        let show = |ui: &mut egui::Ui, d: &Design| {
+            ui.vertical(|ui| {
+                let edited = self
+                    .swap
+                    .and_then(|io| d.churn(io).ok())
+                    .unwrap_or_default();
+                let title = match self.swap {
+                    Some(io) => format!(
+                        "{} design: replacing {io} edits {} class{}: {}",
+                        d.name,
+                        edited.len(),
+                        if edited.len() == 1 { "" } else { "es" },
+                        edited.join(", ")
+                    ),
+                    None => format!("{} design", d.name),
+                };
+                ui.set_width(width);
+                ui.label(RichText::new(title).strong());
+                draw(ui, d, &edited, self.swap, width);
+            });
+        };
+        if wide {
+            ui.horizontal_top(|ui| {
+                for d in &designs {
+                    show(ui, d);
+                }
+            });
+        } else {
+            for d in &designs {
+                show(ui, d);
+            }
+        }
+    }
+}
