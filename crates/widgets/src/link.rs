@@ -26,6 +26,12 @@ pub fn encode<T: Serialize>(state: &T) -> Option<String> {
     (text.len() <= MAX_LEN).then_some(text)
 }
 
+/// A widget's state for a link: `now` encoded, or `None` while it is
+/// still what the lesson set up (`initial`).
+pub fn changed<T: Serialize + PartialEq>(now: &T, initial: &T) -> Option<String> {
+    (now != initial).then(|| encode(now)).flatten()
+}
+
 /// Link text back into a state; `None` for anything that is not a state
 /// of this type and version.
 pub fn decode<T: DeserializeOwned>(text: &str) -> Option<T> {

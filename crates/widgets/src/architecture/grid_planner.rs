@@ -276,9 +276,7 @@ impl LabWidget for GridPlanner {
     }
 
     fn state(&self) -> Option<String> {
-        (self.setup != self.initial)
-            .then(|| link::encode(&self.setup))
-            .flatten()
+        link::changed(&self.setup, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

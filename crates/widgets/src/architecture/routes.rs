@@ -208,9 +208,7 @@ impl LabWidget for SensingRoutes {
     }
 
     fn state(&self) -> Option<String> {
-        (self.wiring != self.initial)
-            .then(|| link::encode(&self.wiring))
-            .flatten()
+        link::changed(&self.wiring, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

@@ -158,9 +158,7 @@ impl LabWidget for Frog {
     }
 
     fn state(&self) -> Option<String> {
-        (self.flies != self.initial)
-            .then(|| link::encode(&self.flies))
-            .flatten()
+        link::changed(&self.flies, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

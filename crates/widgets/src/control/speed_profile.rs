@@ -38,9 +38,7 @@ impl LabWidget for Widget {
     }
 
     fn state(&self) -> Option<String> {
-        (self.now != self.initial)
-            .then(|| link::encode(&self.now))
-            .flatten()
+        link::changed(&self.now, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

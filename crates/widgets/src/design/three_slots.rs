@@ -290,9 +290,7 @@ impl LabWidget for ThreeSlots {
     }
 
     fn state(&self) -> Option<String> {
-        (self.choice != self.initial)
-            .then(|| link::encode(&self.choice))
-            .flatten()
+        link::changed(&self.choice, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

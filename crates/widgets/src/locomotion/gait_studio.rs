@@ -476,9 +476,7 @@ impl LabWidget for GaitStudio {
     }
 
     fn state(&self) -> Option<String> {
-        (self.setup != self.initial)
-            .then(|| link::encode(&self.setup))
-            .flatten()
+        link::changed(&self.setup, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

@@ -52,9 +52,7 @@ impl LabWidget for LegEvents {
     }
 
     fn state(&self) -> Option<String> {
-        (self.legs != self.initial)
-            .then(|| link::encode(&self.legs))
-            .flatten()
+        link::changed(&self.legs, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

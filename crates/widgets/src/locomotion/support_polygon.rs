@@ -249,9 +249,7 @@ impl LabWidget for SupportPolygon {
     }
 
     fn state(&self) -> Option<String> {
-        (self.stance != self.initial)
-            .then(|| link::encode(&self.stance))
-            .flatten()
+        link::changed(&self.stance, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

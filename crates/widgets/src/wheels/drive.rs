@@ -413,9 +413,7 @@ impl LabWidget for Drive {
     }
 
     fn state(&self) -> Option<String> {
-        (self.command != self.initial)
-            .then(|| link::encode(&self.command))
-            .flatten()
+        link::changed(&self.command, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

@@ -203,9 +203,7 @@ impl LabWidget for ArchitectureArena {
     }
 
     fn state(&self) -> Option<String> {
-        (self.design != self.initial)
-            .then(|| link::encode(&self.design))
-            .flatten()
+        link::changed(&self.design, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {

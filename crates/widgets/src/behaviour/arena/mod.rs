@@ -278,9 +278,7 @@ impl LabWidget for Arena {
     }
 
     fn state(&self) -> Option<String> {
-        (self.design != self.initial)
-            .then(|| link::encode(&self.design))
-            .flatten()
+        link::changed(&self.design, &self.initial)
     }
 
     fn restore(&mut self, state: &str) {
