@@ -176,8 +176,8 @@ fn answer_controls(
             state.sorted.resize(items.len(), None);
             ui.label(RichText::new("Put each item in its bin.").small().weak());
             for (i, item) in items.iter().enumerate() {
+                // The bins first, so they line up down the list.
                 ui.horizontal_wrapped(|ui| {
-                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
                     for (b, bin) in bins.iter().enumerate() {
                         let on = state.sorted[i] == Some(b);
                         if ui
@@ -188,6 +188,8 @@ fn answer_controls(
                             state.verdict = None;
                         }
                     }
+                    ui.add_space(6.0);
+                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
                 });
             }
             state

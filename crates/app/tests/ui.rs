@@ -317,3 +317,25 @@ fn the_gallery_lists_every_widget_from_the_schema_and_shows_each_alone() {
     h.run_steps(4);
     h.get_by_label("No such widget");
 }
+
+#[test]
+fn a_sorting_quiz_marks_each_item() {
+    let lesson = "software-stability/what-stability-means";
+    let mut h = harness(KinolabApp::new(None, &format!("#/{lesson}")));
+    // Six items, three bins each: put every item in "control loop".
+    for i in 0..6 {
+        h.get_all_by_label("control loop").nth(i).unwrap().click();
+        h.run();
+    }
+    h.get_all_by_label("Check answer").next().unwrap().click();
+    h.run();
+    h.get_by_label("Not quite. Read why, then try again.");
+    // Two items were right; the other four say where they belong.
+    assert_eq!(h.get_all_by_label("right:").count(), 2);
+    assert_eq!(
+        h.get_all_by_label("belongs in walker's balance:").count(),
+        2
+    );
+    assert_eq!(h.get_all_by_label("belongs in software design:").count(), 2);
+    assert!(!h.state().progress().quizzes[&format!("{lesson}#0")].correct);
+}
