@@ -55,7 +55,7 @@ fn a_broken_lesson_names_the_line() {
         .unwrap_err();
     assert_eq!(
         error.to_string(),
-        "x.md:7: unknown quiz kind `poem` (expected single, multiple or numeric)"
+        "x.md:7: unknown quiz kind `poem` (expected single, multiple, numeric or sort)"
     );
     assert!(kinolab_js::check_lesson("x.md", "no front matter").is_err());
 }

@@ -33,7 +33,7 @@ fn positions(design: &Design, rect: egui::Rect) -> Vec<(&'static str, Pos2)> {
             .collect();
         for (i, name) in names.iter().enumerate() {
             let x = rect.left() + rect.width() * (i as f32 + 0.5) / names.len().max(1) as f32;
-            let y = rect.top() + 22.0 + r as f32 * (rect.height() - 44.0) / 2.0;
+            let y = rect.top() + 22.0 + r as f32 * (rect.height() - 80.0) / 2.0;
             out.push((*name, pos2(x, y)));
         }
     }
@@ -55,7 +55,7 @@ fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&st
             } else {
                 Stroke::new(1.0, faint)
             };
-            painter.line_segment([a, b], stroke);
+            painter.add(egui::Shape::line(link_line(a, b), stroke));
         }
     }
     let ink = ui.visuals().text_color();
@@ -72,15 +72,34 @@ fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&st
             .size()
             + vec2(10.0, 6.0);
         let r = egui::Rect::from_center_size(p, size);
-        let edge = if edited.contains(&c.name) {
+        let outline = if edited.contains(&c.name) {
             Stroke::new(2.5, theme::warn_color(ui))
         } else if Some(c.name) == swapped {
             Stroke::new(2.5, Color32::from_rgb(200, 60, 40))
         } else {
             Stroke::new(1.0, faint)
         };
-        painter.rect(r, 4.0, fill, edge, egui::StrokeKind::Inside);
+        // An opaque box, so no line runs through a name.
+        painter.rect_filled(r, 4.0, ui.visuals().extreme_bg_color);
+        painter.rect(r, 4.0, fill, outline, egui::StrokeKind::Inside);
         painter.text(p, Align2::CENTER_CENTER, c.name, font, ink);
+    }
+}
+
+/// A use drawn from box edge to box edge; between two classes in one row,
+/// an arc that dips below the row instead of a line through its names.
+fn link_line(a: Pos2, b: Pos2) -> Vec<Pos2> {
+    if (a.y - b.y).abs() < 1.0 {
+        let dip = 12.0 + (b.x - a.x).abs() * 0.08;
+        (0..=16)
+            .map(|k| {
+                let t = k as f32 / 16.0;
+                pos2(a.x + (b.x - a.x) * t, a.y + 9.0 + dip * 4.0 * t * (1.0 - t))
+            })
+            .collect()
+    } else {
+        let (top, bottom) = if a.y < b.y { (a, b) } else { (b, a) };
+        vec![top + vec2(0.0, 9.0), bottom - vec2(0.0, 9.0)]
     }
 }
 
