@@ -149,8 +149,28 @@ try {
     assert.equal(await embed.textContent("#field-out"), "A U-shaped wall: trapped at (3.75, 0.00)");
     await embed.selectOption("#field", "rock-on-the-axis");
     assert.equal(await embed.textContent("#field-out"), "A rock on the axis: no trap");
+    await embed.fill("#com", "0.05");
+    assert.equal(await embed.textContent("#stability-out"),
+      "Type two numbers for the centre of mass (x, y), separated by commas, for example 0.05, 0.02.");
     await embed.screenshot({ path: `${out}/embed.png`, fullPage: true });
   });
+
+  // A phone: every lesson must fit the screen's width (the app reports how
+  // far right its content reaches), with touch input and no console errors.
+  const phone = await browser.newContext({ viewport: { width: 412, height: 915 }, hasTouch: true, isMobile: true });
+  const small = await phone.newPage();
+  watch(small, "phone");
+  for (const lesson of ["wheeled-locomotion/icr-and-holonomy", "motion-control/feedback-and-polar-coordinates", "legged-locomotion/gaits"]) {
+    await check(`${lesson} fits a 412 px wide phone`, async () => {
+      await small.goto(`${server.url}#/${lesson}`);
+      await waitForPage(small, lesson);
+      await small.waitForTimeout(400);
+      const [right, screen] = (await small.evaluate(() => document.documentElement.dataset.kinolabExtent)).split(" ").map(Number);
+      assert.ok(screen > 300 && screen <= 412, `screen ${screen}`);
+      assert.ok(right <= screen + 0.5, `content reaches ${right} on a ${screen} wide screen`);
+      await small.screenshot({ path: `${out}/phone-${lesson.split("/")[1]}.png` });
+    });
+  }
 
   await check("no console errors, page errors or failed loads", async () => {
     assert.deepEqual(problems, []);

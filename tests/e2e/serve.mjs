@@ -21,8 +21,20 @@ export function serve(root) {
     let file = join(root, path);
     try {
       if ((await stat(file)).isDirectory()) file = join(file, "index.html");
-      const body = await readFile(file);
-      res.writeHead(200, { "content-type": TYPES[extname(file)] ?? "application/octet-stream", "cache-control": "no-cache" });
+      const headers = { "content-type": TYPES[extname(file)] ?? "application/octet-stream", "cache-control": "no-cache", "vary": "accept-encoding" };
+      // Like a host that serves precompressed files: the Brotli or gzip copy
+      // beside the file (`cargo xtask dist` writes them), when the browser
+      // accepts it.
+      const accepts = req.headers["accept-encoding"] ?? "";
+      let body = null;
+      for (const [encoding, suffix] of [["br", ".br"], ["gzip", ".gz"]]) {
+        if (body === null && accepts.includes(encoding)) {
+          body = await readFile(file + suffix).catch(() => null);
+          if (body !== null) headers["content-encoding"] = encoding;
+        }
+      }
+      body ??= await readFile(file);
+      res.writeHead(200, headers);
       res.end(body);
     } catch {
       res.writeHead(404, { "content-type": "text/plain" });

@@ -3,12 +3,12 @@
 
 use std::collections::HashMap;
 
-use egui::{RichText, Stroke};
+use egui::{Color32, RichText, Stroke};
 use kinolab_lessons::{Align, Block, Inline, Quiz, Span, WidgetSpec, math::Math};
 
 use kinolab_formula::layout::{MathStyle, display_math, math_widget};
 use kinolab_widgets::theme;
-use kinolab_widgets::widget::{LabWidget, error_box};
+use kinolab_widgets::widget::{LabWidget, error_box, sideways};
 
 use crate::images::ImageCache;
 use crate::progress::Progress;
@@ -72,7 +72,10 @@ fn block_ui(
             ui.add_space(8.0);
         }
         Block::Math(math) => {
-            display_math(ui, math, &math_style(ui, theme::BODY_SIZE));
+            let style = math_style(ui, theme::BODY_SIZE);
+            sideways(ui, |ui| {
+                display_math(ui, math, &style);
+            });
             ui.add_space(8.0);
         }
         Block::List { start, items } => list_ui(ui, *start, items, state, quiz_no, widget_no),
@@ -237,7 +240,7 @@ pub fn inline_ui(
                     ui.label(RichText::new(code).code().size(theme::CODE_SIZE));
                 }
                 Span::Math(math) => {
-                    inline_math(ui, math, size);
+                    inline_math(ui, math, size, strong);
                 }
                 Span::Image { .. } => {}
                 Span::LineBreak => ui.end_row(),
@@ -246,8 +249,12 @@ pub fn inline_ui(
     });
 }
 
-fn inline_math(ui: &mut egui::Ui, math: &Math, size: f32) {
-    let style = math_style(ui, size);
+/// A formula in running text, in the same colour as the words around it.
+fn inline_math(ui: &mut egui::Ui, math: &Math, size: f32, strong: bool) {
+    let mut style = math_style(ui, size);
+    if strong {
+        style.color = ui.visuals().strong_text_color();
+    }
     math_widget(ui, math, &style);
 }
 
@@ -275,13 +282,76 @@ fn table_ui(
             .clamp(6, 40) as f32
     };
     let weights: Vec<f32> = (0..columns).map(weight).collect();
-    let total: f32 = weights.iter().sum();
+    // No column is narrower than its longest word, so words never break.
+    let font = egui::FontId::proportional(theme::BODY_SIZE - 1.0);
+    let longest_word = |col: usize| {
+        std::iter::once(header.get(col))
+            .chain(rows.iter().map(|r| r.get(col)))
+            .flatten()
+            .flat_map(|cell| {
+                let text = kinolab_lessons::plain_text(cell);
+                text.split_whitespace()
+                    .map(|w| {
+                        ui.painter()
+                            .layout_no_wrap(w.to_owned(), font.clone(), Color32::WHITE)
+                            .size()
+                            .x
+                    })
+                    .collect::<Vec<f32>>()
+            })
+            .fold(0.0f32, f32::max)
+    };
+    // Bold headers are a little wider than the measure.
+    let least: Vec<f32> = (0..columns).map(|c| longest_word(c) * 1.08 + 4.0).collect();
     let gap = 16.0;
     let usable = ui.available_width() - 14.0 - gap * (columns as f32 - 1.0);
-    let widths: Vec<f32> = weights
-        .iter()
-        .map(|w| (usable * w / total).max(40.0))
-        .collect();
+    let widths = column_widths(&weights, &least, usable);
+    // A table that cannot fit even at its narrowest scrolls sideways.
+    sideways(ui, |ui| {
+        table_frame(ui, header, rows, align, &widths, gap, state)
+    });
+}
+
+/// Share `usable` points among columns in proportion to `weights`, none
+/// narrower than its `least`; when even the least widths do not fit, the
+/// columns get exactly those (and the table scrolls).
+pub fn column_widths(weights: &[f32], least: &[f32], usable: f32) -> Vec<f32> {
+    let mut widths: Vec<f32> = least.to_vec();
+    let mut free: Vec<usize> = (0..weights.len()).collect();
+    // Columns whose share is below their least width take that width; the
+    // rest share what is left, repeated until every share suffices.
+    for _ in 0..weights.len() {
+        let fixed: f32 = (0..weights.len())
+            .filter(|c| !free.contains(c))
+            .map(|c| widths[c])
+            .sum();
+        let left = (usable - fixed).max(0.0);
+        let total: f32 = free.iter().map(|&c| weights[c]).sum::<f32>().max(1e-6);
+        let short: Vec<usize> = free
+            .iter()
+            .copied()
+            .filter(|&c| left * weights[c] / total < least[c])
+            .collect();
+        if short.is_empty() {
+            for &c in &free {
+                widths[c] = left * weights[c] / total;
+            }
+            break;
+        }
+        free.retain(|c| !short.contains(c));
+    }
+    widths
+}
+
+fn table_frame(
+    ui: &mut egui::Ui,
+    header: &[Inline],
+    rows: &[Vec<Inline>],
+    align: &[Align],
+    widths: &[f32],
+    gap: f32,
+    state: &mut LessonState<'_>,
+) {
     egui::Frame::new()
         .stroke(Stroke::new(
             1.0,
@@ -362,8 +432,43 @@ pub fn widget_frame(ui: &mut egui::Ui, id: &str, name: &str, slot: &mut WidgetSl
         .show(ui, |ui| {
             ui.set_width(ui.available_width());
             ui.push_id(id, |ui| match slot {
-                Ok(widget) => widget.ui(ui),
+                Ok(widget) => {
+                    let at = egui::Id::unique(("widget-rect", id));
+                    kinolab_widgets::widget::animated_scope(ui, at, |ui| widget.ui(ui));
+                }
                 Err(message) => error_box(ui, &format!("Widget `{name}` cannot be shown"), message),
             });
         });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::column_widths;
+
+    #[test]
+    fn columns_share_the_width_by_weight_when_all_fit() {
+        let w = column_widths(&[10.0, 30.0], &[20.0, 20.0], 400.0);
+        assert!(
+            (w[0] - 100.0).abs() < 1e-3 && (w[1] - 300.0).abs() < 1e-3,
+            "{w:?}"
+        );
+    }
+
+    #[test]
+    fn a_short_column_keeps_its_longest_word_and_the_rest_share_what_is_left() {
+        // Column 0's share (40) is below its longest word (90).
+        let w = column_widths(&[6.0, 27.0, 27.0], &[90.0, 30.0, 30.0], 400.0);
+        assert!((w[0] - 90.0).abs() < 1e-3, "{w:?}");
+        assert!(
+            (w[1] - 155.0).abs() < 1e-3 && (w[2] - 155.0).abs() < 1e-3,
+            "{w:?}"
+        );
+        assert!((w.iter().sum::<f32>() - 400.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn a_table_that_cannot_fit_gets_its_least_widths() {
+        let w = column_widths(&[1.0, 1.0, 1.0], &[150.0, 150.0, 150.0], 300.0);
+        assert_eq!(w, vec![150.0; 3]);
+    }
 }

@@ -58,8 +58,10 @@ fn main() {
             .await;
         match result {
             Ok(()) => {
+                // The message stays until the first frame is drawn
+                // (`web::after_frame` removes it); until then, say where we are.
                 if let Some(loading) = document.get_element_by_id("kinolab-loading") {
-                    loading.remove();
+                    loading.set_text_content(Some("Drawing the first page…"));
                 }
             }
             Err(e) => kinolab_app::web::show_fatal(&format!(

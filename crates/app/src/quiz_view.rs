@@ -2,7 +2,7 @@
 //! verdict with its explanation once answered.
 
 use egui::{Color32, RichText, Stroke};
-use kinolab_lessons::{Answer, Inline, Quiz, QuizKind, Span};
+use kinolab_lessons::{Answer, Inline, Quiz, QuizKind};
 
 use crate::lesson_view::inline_ui;
 use crate::route::Page;
@@ -32,17 +32,6 @@ pub fn parse_typed_number(text: &str) -> Option<f64> {
         .map(|c| if c == ',' { '.' } else { c })
         .collect();
     cleaned.parse::<f64>().ok().filter(|v| v.is_finite())
-}
-
-fn plain(inline: &Inline) -> Option<String> {
-    let mut out = String::new();
-    for span in inline {
-        match span {
-            Span::Text { text, .. } => out.push_str(text),
-            _ => return None,
-        }
-    }
-    Some(out)
 }
 
 /// Draw the quiz; returns true when the learner pressed Check with a
@@ -131,9 +120,7 @@ fn answer_controls(
         QuizKind::Single { options, .. } => {
             for (i, option) in options.iter().enumerate() {
                 let selected = state.choice == Some(i);
-                let clicked = ui
-                    .horizontal_wrapped(|ui| option_control(ui, option, selected, false, navigate))
-                    .inner;
+                let clicked = option_control(ui, option, selected, false, navigate);
                 if clicked {
                     state.choice = Some(i);
                     state.verdict = None;
@@ -146,9 +133,7 @@ fn answer_controls(
             ui.label(RichText::new("Tick every right answer.").small().weak());
             for (i, option) in options.iter().enumerate() {
                 let ticked = state.ticks[i];
-                let clicked = ui
-                    .horizontal_wrapped(|ui| option_control(ui, option, ticked, true, navigate))
-                    .inner;
+                let clicked = option_control(ui, option, ticked, true, navigate);
                 if clicked {
                     state.ticks[i] = !ticked;
                     state.verdict = None;
@@ -157,7 +142,7 @@ fn answer_controls(
             Some(Answer::Multiple(state.ticks.clone()))
         }
         QuizKind::Numeric { unit, .. } => {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 let label = ui.label(RichText::new("Your answer:").size(theme::BODY_SIZE));
                 let edit = egui::TextEdit::singleline(&mut state.typed)
                     .hint_text("a number")
@@ -175,6 +160,8 @@ fn answer_controls(
         QuizKind::Sort { bins, items } => {
             state.sorted.resize(items.len(), None);
             ui.label(RichText::new("Put each item in its bin.").small().weak());
+            // On a phone the item's text goes on its own line, under its bins.
+            let narrow = kinolab_widgets::widget::narrow(ui);
             for (i, item) in items.iter().enumerate() {
                 // The bins first, so they line up down the list.
                 ui.horizontal_wrapped(|ui| {
@@ -189,8 +176,14 @@ fn answer_controls(
                         }
                     }
                     ui.add_space(6.0);
-                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
+                    if !narrow {
+                        inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
+                    }
                 });
+                if narrow {
+                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
+                    ui.add_space(4.0);
+                }
             }
             state
                 .sorted
@@ -234,8 +227,9 @@ fn sort_feedback(ui: &mut egui::Ui, quiz: &Quiz, state: &QuizState, navigate: &m
     }
 }
 
-/// One option: a radio button or checkbox labelled with the option's text
-/// (formulas drawn beside an unlabelled control). Returns true if clicked.
+/// One option: a radio button or checkbox, then the option's text set like
+/// any lesson text (so options with and without formulas line up and share
+/// one colour); a click anywhere on the row picks it. Returns true if clicked.
 fn option_control(
     ui: &mut egui::Ui,
     option: &Inline,
@@ -243,15 +237,13 @@ fn option_control(
     checkbox: bool,
     navigate: &mut Option<Page>,
 ) -> bool {
-    let text = plain(option);
-    let label = RichText::new(text.clone().unwrap_or_default()).size(theme::BODY_SIZE);
-    let response = if checkbox {
-        let mut value = on;
-        ui.checkbox(&mut value, label)
-    } else {
-        ui.radio(on, label)
-    };
-    if text.is_none() {
+    let row = ui.horizontal(|ui| {
+        let response = if checkbox {
+            let mut value = on;
+            ui.checkbox(&mut value, "")
+        } else {
+            ui.radio(on, "")
+        };
         // The control has no text of its own: name it for screen readers.
         let role = if checkbox {
             egui::Role::CheckBox
@@ -260,7 +252,12 @@ fn option_control(
         };
         let name = kinolab_lessons::plain_text(option);
         response.widget_info(|| egui::WidgetInfo::selected(role, true, on, name.clone()));
-        inline_ui(ui, option, theme::BODY_SIZE, false, navigate);
+        ui.vertical(|ui| inline_ui(ui, option, theme::BODY_SIZE, false, navigate));
+        response.clicked()
+    });
+    let text = row.response.interact(egui::Sense::click());
+    if text.hovered() {
+        ui.ctx().set_cursor_icon(egui::CursorIcon::PointingHand);
     }
-    response.clicked()
+    row.inner || text.clicked()
 }

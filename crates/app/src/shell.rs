@@ -14,8 +14,13 @@ use crate::progress::Progress;
 use crate::quiz_view::QuizState;
 use crate::route::{self, Page};
 
-/// Narrower than this, the lesson list starts closed.
+/// Narrower than this, the lesson list starts closed and opens over the
+/// page instead of beside it.
 const NARROW: f32 = 1100.0;
+/// Narrower than this (a phone), the top bar keeps only what it needs.
+const PHONE: f32 = 640.0;
+/// The lesson list's width when it opens over the page.
+const OVERLAY_LIST: f32 = 340.0;
 /// The text column never grows wider than this, for readable lines.
 const MAX_COLUMN: f32 = 820.0;
 
@@ -44,6 +49,9 @@ pub struct KinolabApp {
     style_ready: bool,
     /// Frames that drew the lab's content.
     frames_drawn: u64,
+    /// How far right the page's content reached on the last frame, and the
+    /// screen's width, in points: content past the screen is cut off.
+    extent: (f32, f32),
 }
 
 impl std::fmt::Debug for KinolabApp {
@@ -75,6 +83,7 @@ impl KinolabApp {
             scroll_to_top: false,
             style_ready: false,
             frames_drawn: 0,
+            extent: (0.0, 0.0),
         };
         app.follow_hash(hash);
         app
@@ -214,10 +223,11 @@ impl KinolabApp {
             ui.ctx().request_repaint();
             return;
         }
-        let wide = ui.ctx().content_rect().width() >= NARROW;
+        let screen = ui.ctx().content_rect();
+        let wide = screen.width() >= NARROW;
         let sidebar_open = *self.sidebar_open.get_or_insert(wide);
-        self.top_bar(ui, sidebar_open);
-        if sidebar_open {
+        let bar_bottom = self.top_bar(ui, sidebar_open, screen.width() < PHONE);
+        if sidebar_open && wide {
             egui::Panel::left("lesson-list")
                 .resizable(true)
                 .default_size(270.0)
@@ -225,7 +235,49 @@ impl KinolabApp {
                 .show(ui, |ui| self.sidebar(ui));
         }
         egui::CentralPanel::default().show(ui, |ui| self.main_area(ui));
+        if sidebar_open && !wide {
+            self.sidebar_overlay(ui.ctx(), screen, bar_bottom);
+        }
         self.frames_drawn = self.frames_drawn.saturating_add(1);
+    }
+
+    /// On a narrow screen the lesson list opens over the page, which keeps
+    /// its full width; a tap beside the list or Escape closes it.
+    fn sidebar_overlay(&mut self, ctx: &egui::Context, screen: egui::Rect, top: f32) {
+        let area = egui::Rect::from_min_max(egui::pos2(screen.left(), top), screen.max);
+        let shade = egui::Area::new(egui::Id::unique("lesson-list-shade"))
+            .order(egui::Order::Middle)
+            .fixed_pos(area.min)
+            .show(ctx, |ui| {
+                let (rect, response) = ui.allocate_exact_size(area.size(), egui::Sense::click());
+                ui.painter()
+                    .rect_filled(rect, 0.0, egui::Color32::from_black_alpha(110));
+                response
+            });
+        let width = OVERLAY_LIST.min(screen.width() - 40.0).max(200.0);
+        egui::Area::new(egui::Id::unique("lesson-list-overlay"))
+            .order(egui::Order::Foreground)
+            .fixed_pos(area.min)
+            .show(ctx, |ui| {
+                egui::Frame::new()
+                    .fill(ui.visuals().panel_fill)
+                    .inner_margin(8.0)
+                    .show(ui, |ui| {
+                        ui.set_width(width);
+                        ui.set_height(area.height() - 16.0);
+                        self.sidebar(ui);
+                    });
+            });
+        if shade.inner.clicked() || ctx.input(|i| i.key_pressed(egui::Key::Escape)) {
+            self.sidebar_open = Some(false);
+        }
+    }
+
+    /// How far right the page's content reached on the last frame and the
+    /// screen's width, in points; content past the screen's edge is a
+    /// layout bug (the end-to-end test checks it on a phone-sized screen).
+    pub fn extent(&self) -> (f32, f32) {
+        self.extent
     }
 
     /// How many frames have drawn content (0 while fonts are being set up).
@@ -233,8 +285,10 @@ impl KinolabApp {
         self.frames_drawn
     }
 
-    fn top_bar(&mut self, ui: &mut egui::Ui, sidebar_open: bool) {
-        egui::Panel::top("top-bar").show(ui, |ui| {
+    /// The top bar; returns where it ends. On a phone it keeps the lesson
+    /// list's button, the name and the theme switch.
+    fn top_bar(&mut self, ui: &mut egui::Ui, sidebar_open: bool, phone: bool) -> f32 {
+        let bar = egui::Panel::top("top-bar").show(ui, |ui| {
             ui.horizontal(|ui| {
                 let toggle = ui
                     .selectable_label(sidebar_open, RichText::new("≡ Lessons").size(15.0))
@@ -248,33 +302,46 @@ impl KinolabApp {
                 {
                     self.navigate(Page::Home);
                 }
-                ui.label(RichText::new("robotics, live").weak());
+                if !phone {
+                    ui.label(RichText::new("robotics, live").weak());
+                }
                 ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                    let dark = ui.visuals().dark_mode;
-                    let (icon, label) = if dark {
-                        ("Light theme", "Switch to the light theme")
-                    } else {
-                        ("Dark theme", "Switch to the dark theme")
-                    };
-                    if ui.button(icon).on_hover_text(label).clicked() {
-                        self.progress.dark = Some(!dark);
-                        self.progress_dirty = true;
-                        self.apply_theme(ui.ctx());
-                    }
-                    if let Ok(course) = &self.course {
-                        let addresses = course.addresses();
-                        let total = addresses.len();
-                        let visited = addresses
-                            .iter()
-                            .filter(|a| self.progress.visited.contains(*a))
-                            .count();
-                        ui.label(
-                            RichText::new(format!("{visited} of {total} lessons opened")).weak(),
-                        );
+                    self.theme_switch(ui, phone);
+                    if !phone {
+                        self.progress_count(ui);
                     }
                 });
             });
         });
+        bar.response.rect.bottom()
+    }
+
+    fn theme_switch(&mut self, ui: &mut egui::Ui, short: bool) {
+        let dark = ui.visuals().dark_mode;
+        let (label, hover) = match (dark, short) {
+            (true, false) => ("Light theme", "Switch to the light theme"),
+            (true, true) => ("Light", "Switch to the light theme"),
+            (false, false) => ("Dark theme", "Switch to the dark theme"),
+            (false, true) => ("Dark", "Switch to the dark theme"),
+        };
+        if ui.button(label).on_hover_text(hover).clicked() {
+            self.progress.dark = Some(!dark);
+            self.progress_dirty = true;
+            self.apply_theme(ui.ctx());
+        }
+    }
+
+    fn progress_count(&self, ui: &mut egui::Ui) {
+        if let Ok(course) = &self.course {
+            let addresses = course.addresses();
+            let visited = addresses
+                .iter()
+                .filter(|a| self.progress.visited.contains(*a))
+                .count();
+            ui.label(
+                RichText::new(format!("{visited} of {} lessons opened", addresses.len())).weak(),
+            );
+        }
     }
 
     fn sidebar(&mut self, ui: &mut egui::Ui) {
@@ -327,7 +394,7 @@ impl KinolabApp {
         scroll.show(ui, |ui| {
             let column = ui.available_width().min(MAX_COLUMN);
             let margin = ((ui.available_width() - column) / 2.0).max(0.0);
-            ui.horizontal(|ui| {
+            let page = ui.horizontal(|ui| {
                 ui.add_space(margin);
                 ui.vertical(|ui| {
                     ui.set_width(column - 16.0);
@@ -360,6 +427,7 @@ impl KinolabApp {
                     ui.add_space(40.0);
                 });
             });
+            self.extent = (page.response.rect.right(), ui.ctx().content_rect().right());
         });
     }
 
@@ -421,28 +489,17 @@ impl KinolabApp {
         ui.add_space(16.0);
         ui.separator();
         let (previous, next) = course.neighbours(address);
-        ui.horizontal(|ui| {
-            if let Some(prev) = previous {
-                let title = course
-                    .lesson(&prev)
-                    .map(|(_, l)| l.meta.title.clone())
-                    .unwrap_or_default();
-                if ui.button(format!("← Previous: {title}")).clicked() {
-                    navigate = Some(Page::Lesson(prev));
-                }
-            }
-            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                if let Some(next) = next {
-                    let title = course
-                        .lesson(&next)
-                        .map(|(_, l)| l.meta.title.clone())
-                        .unwrap_or_default();
-                    if ui.button(format!("Next: {title} →")).clicked() {
-                        navigate = Some(Page::Lesson(next));
-                    }
-                }
-            });
-        });
+        let title = |address: &str| {
+            course
+                .lesson(address)
+                .map(|(_, l)| l.meta.title.clone())
+                .unwrap_or_default()
+        };
+        let previous = previous.map(|a| (title(&a), a));
+        let next = next.map(|a| (title(&a), a));
+        if let Some(page) = lesson_neighbours(ui, previous, next) {
+            navigate = Some(page);
+        }
         self.progress_dirty |= changed;
         if let Some(page) = navigate {
             self.navigate(page);
@@ -519,4 +576,43 @@ fn lesson_header(ui: &mut egui::Ui, unit: &Unit, lesson: &Lesson) {
             }
         });
     ui.add_space(6.0);
+}
+
+/// Buttons to the previous and the next lesson: side by side with their
+/// titles on a wide column; short, one under the other, with the title
+/// beside, on a phone.
+fn lesson_neighbours(
+    ui: &mut egui::Ui,
+    previous: Option<(String, String)>,
+    next: Option<(String, String)>,
+) -> Option<Page> {
+    let mut target = None;
+    if kinolab_widgets::widget::narrow(ui) {
+        for (arrow, lesson) in [("← Previous", previous), ("Next →", next)] {
+            if let Some((title, address)) = lesson {
+                ui.horizontal_wrapped(|ui| {
+                    if ui.button(arrow).clicked() {
+                        target = Some(Page::Lesson(address));
+                    }
+                    ui.label(RichText::new(title).weak());
+                });
+            }
+        }
+        return target;
+    }
+    ui.horizontal(|ui| {
+        if let Some((title, address)) = previous
+            && ui.button(format!("← Previous: {title}")).clicked()
+        {
+            target = Some(Page::Lesson(address));
+        }
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            if let Some((title, address)) = next
+                && ui.button(format!("Next: {title} →")).clicked()
+            {
+                target = Some(Page::Lesson(address));
+            }
+        });
+    });
+    target
 }

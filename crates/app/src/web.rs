@@ -86,18 +86,25 @@ pub fn after_frame(app: &mut KinolabApp) {
     if app.frames_drawn() == 0 {
         return;
     }
-    let signal = format!("{page}|{}", app.title());
+    let (right, screen) = app.extent();
+    let extent = format!("{right:.0} {screen:.0}");
+    let signal = format!("{page}|{}|{extent}", app.title());
     if LAST_SIGNAL.with_borrow(|last| *last != signal) {
         if let Some(document) = window().and_then(|w| w.document()) {
             document.set_title(&app.title());
             if let Some(root) = document.document_element() {
                 let _ = root.set_attribute("data-kinolab-page", &page);
+                // Where the page's content ends and where the screen does.
+                let _ = root.set_attribute("data-kinolab-extent", &extent);
                 if root.get_attribute("data-kinolab-ready").is_none() {
                     // Milliseconds from navigation to the first drawn frame.
                     let now = window()
                         .and_then(|w| w.performance())
                         .map_or(0.0, |p| p.now());
                     let _ = root.set_attribute("data-kinolab-first-frame-ms", &format!("{now:.1}"));
+                    if let Some(loading) = document.get_element_by_id("kinolab-loading") {
+                        loading.remove();
+                    }
                 }
                 let _ = root.set_attribute("data-kinolab-ready", "1");
             }

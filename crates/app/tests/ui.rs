@@ -2,7 +2,7 @@
 //! The lab driven the way a learner drives it: by labels, clicks and typing.
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use kinolab_app::KinolabApp;
 use kinolab_app::route::Page;
 
@@ -20,6 +20,11 @@ fn animated(app: KinolabApp) -> Harness<'static, KinolabApp> {
 }
 
 const LESSON: &str = "automation/open-and-closed-worlds";
+
+/// A quiz option's radio button (its text is also on the page as a label).
+fn radio<'h>(h: &'h Harness<'static, KinolabApp>, text: &'h str) -> egui_kittest::Node<'h> {
+    h.get_by_role_and_label(egui::accesskit::Role::RadioButton, text)
+}
 
 #[test]
 fn opening_a_lesson_by_its_label_shows_it_and_records_the_visit() {
@@ -42,8 +47,11 @@ fn opening_a_lesson_by_its_label_shows_it_and_records_the_visit() {
 #[test]
 fn a_right_answer_is_praised_and_explained() {
     let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
-    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell")
-        .click();
+    radio(
+        &h,
+        "A palletising arm fed by a conveyor inside a fenced cell",
+    )
+    .click();
     h.run();
     h.get_all_by_label("Check answer").next().unwrap().click();
     h.run();
@@ -57,16 +65,18 @@ fn a_right_answer_is_praised_and_explained() {
 #[test]
 fn a_wrong_answer_is_flagged_then_can_be_corrected() {
     let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
-    h.get_by_label("A lawn-mowing robot in a family garden")
-        .click();
+    radio(&h, "A lawn-mowing robot in a family garden").click();
     h.run();
     h.get_all_by_label("Check answer").next().unwrap().click();
     h.run();
     h.get_by_label("Not quite. Read why, then try again.");
     h.get_by_label_contains("Inside the fenced cell the conveyor");
     assert!(!h.state().progress().quizzes[&format!("{LESSON}#0")].correct);
-    h.get_by_label("A palletising arm fed by a conveyor inside a fenced cell")
-        .click();
+    radio(
+        &h,
+        "A palletising arm fed by a conveyor inside a fenced cell",
+    )
+    .click();
     h.run();
     assert!(
         h.query_by_label("Not quite. Read why, then try again.")
@@ -161,6 +171,59 @@ fn every_lesson_renders_without_widget_errors() {
             "{address} shows an error box"
         );
         assert!(h.query_by_label_contains("Lesson not found").is_none());
+    }
+}
+
+/// The narrowest phone the lab supports, in points.
+const PHONE_WIDTH: f32 = 360.0;
+
+#[test]
+fn every_lesson_fits_a_phone_screen() {
+    let app = KinolabApp::new(None, "");
+    let addresses = app.course().unwrap().addresses();
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(PHONE_WIDTH, 16000.0))
+        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let mut too_wide = Vec::new();
+    let widgets = kinolab_schema::WIDGETS
+        .iter()
+        .map(|w| format!("gallery/{}", w.name));
+    let pages = widgets.chain(addresses);
+    for address in pages {
+        h.state_mut().follow_hash(&format!("#/{address}"));
+        h.run_steps(6);
+        let (right, screen) = h.state().extent();
+        assert!(screen > 0.0 && right > 0.0, "{address}: nothing measured");
+        if right > screen + 0.5 {
+            too_wide.push(format!("{address}: {right:.0} > {screen:.0}"));
+        }
+    }
+    assert!(
+        too_wide.is_empty(),
+        "wider than the screen:\n{}",
+        too_wide.join("\n")
+    );
+}
+
+#[test]
+fn controls_at_rest_stand_out_in_both_themes() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    h.run();
+    for theme in [egui::Theme::Light, egui::Theme::Dark] {
+        let visuals = h.ctx.style_of(theme).visuals.clone();
+        let outline = visuals.widgets.inactive.bg_stroke;
+        assert!(outline.width >= 1.0, "{theme:?}: no outline");
+        for background in [
+            visuals.panel_fill,
+            visuals.window_fill,
+            visuals.extreme_bg_color,
+        ] {
+            let ratio = kinolab_widgets::theme::contrast(outline.color, background);
+            assert!(
+                ratio >= kinolab_widgets::theme::CONTROL_CONTRAST,
+                "{theme:?}: an unchosen control's outline has contrast {ratio:.2} against {background:?}"
+            );
+        }
     }
 }
 
@@ -294,6 +357,72 @@ fn the_playground_shows_the_run_and_its_stability() {
         h.state_mut().take_state_hash().as_deref(),
         Some(link.as_str())
     );
+}
+
+#[test]
+fn a_diverging_run_stops_at_the_bound_and_says_so() {
+    let lesson = "#/motion-control/feedback-and-polar-coordinates";
+    let mut h = animated(KinolabApp::new(None, lesson));
+    h.run_steps(4);
+    h.get_all_by_label("k_α")
+        .next()
+        .unwrap()
+        .set_value_accesskit(-8.0);
+    h.get_all_by_label("k_β")
+        .next()
+        .unwrap()
+        .set_value_accesskit(1.5);
+    h.run_steps(4);
+    h.get_by_label_contains("grew past 100 m");
+    h.get_by_label_contains("The plots show the run up to that moment.");
+    assert!(h.query_by_label_contains("Not reached").is_none());
+}
+
+/// The top of the first node labelled `label` (a place to watch for jumps).
+fn top_of(h: &Harness<'static, KinolabApp>, label: &str) -> f32 {
+    h.get_all_by_label_contains(label)
+        .next()
+        .unwrap()
+        .rect()
+        .top()
+}
+
+#[test]
+fn selecting_a_wheel_does_not_move_the_workbench() {
+    let mut h = animated(KinolabApp::new(None, "#/gallery/wheel-workbench"));
+    h.run_steps(4);
+    let canvas = top_of(&h, "Wheel 1 (");
+    let below = top_of(&h, "rank C1");
+    h.get_all_by_label_contains("Wheel 1 (")
+        .next()
+        .unwrap()
+        .click();
+    h.run_steps(4);
+    assert!(
+        !h.get_by_label("Remove selected")
+            .accesskit_node()
+            .is_disabled(),
+        "a wheel is selected"
+    );
+    assert_eq!(top_of(&h, "Wheel 1 ("), canvas, "the canvas moved");
+    assert_eq!(top_of(&h, "rank C1"), below, "the panel beside it moved");
+}
+
+#[test]
+fn a_longer_verdict_does_not_move_the_gain_plane() {
+    let mut h = animated(KinolabApp::new(None, "#/gallery/controller-playground"));
+    h.run_steps(4);
+    h.get_by_label("Gain region").click();
+    h.run_steps(4);
+    let plane = top_of(&h, "The plane at k_ρ");
+    // k_β > 0: the verdict grows from one line to two.
+    h.get_all_by_label("k_β")
+        .next()
+        .unwrap()
+        .set_value_accesskit(1.5);
+    h.run_steps(4);
+    h.get_by_label_contains("k_β > 0");
+    assert_eq!(top_of(&h, "The plane at k_ρ"), plane, "the plot moved");
 }
 
 #[test]

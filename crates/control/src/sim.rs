@@ -211,24 +211,35 @@ pub struct Divergence {
     pub reason: String,
 }
 
-/// Farther than this from the goal, m, a run has run away.
-pub const RUNAWAY_DISTANCE: f64 = 1e6;
+/// A closed-loop run has run away once it is farther than this from the
+/// goal, m, or ten times as far as it started, whichever is farther. (An
+/// open-loop plan cannot run away: it only stops being finite.)
+pub const RUNAWAY_DISTANCE: f64 = 100.0;
+
+/// How far from the goal a closed-loop run starting `start_distance` away
+/// may go before it counts as run away; `None` for an open-loop run.
+fn runaway_bound(driver: &Driver, start_distance: f64) -> Option<f64> {
+    match driver {
+        Driver::Polar { .. } => Some(RUNAWAY_DISTANCE.max(10.0 * start_distance)),
+        Driver::OpenLoop(_) => None,
+    }
+}
 
 /// Why the step from `t` to state `next` (wheels at `wheel_speed`) means
 /// the run has run away, if it does.
-fn runaway(next: &[f64; 3], wheel_speed: f64, t: f64) -> Option<Divergence> {
+fn runaway(next: &[f64; 3], wheel_speed: f64, t: f64, bound: Option<f64>) -> Option<Divergence> {
     let distance = next[0].hypot(next[1]);
     let what = if !(next.iter().all(|v| v.is_finite()) && wheel_speed.is_finite()) {
         "the state stopped being a finite number".to_owned()
-    } else if distance > RUNAWAY_DISTANCE {
-        format!("the robot was {distance:.3e} m from the goal")
+    } else if let Some(bound) = bound.filter(|b| distance > *b) {
+        format!("the distance to the goal grew past {bound:.0} m")
     } else {
         return None;
     };
     Some(Divergence {
         t,
         reason: format!(
-            "diverged after {t:.3} s: {what}; the loop is unstable with these gains, \
+            "diverged after {t:.2} s: {what}; the loop is unstable with these gains, \
              or dt is too large for them"
         ),
     })
@@ -356,6 +367,7 @@ impl Run {
         let mut peak_wheel_speed: f64 = 0.0;
         let mut noise_interval = u64::MAX;
         let mut diverged = None;
+        let bound = runaway_bound(&self.driver, start.x.hypot(start.y));
         for k in 0..=steps {
             let t = (k as f64 * self.dt).min(self.duration);
             // Reached means arrived and stayed: the time it last entered
@@ -401,7 +413,7 @@ impl Run {
             let h = (self.duration - t).min(self.dt);
             // The command at the step's start is the first stage's: reuse it.
             let next = system.rk4(&s, t, h, (v, omega));
-            diverged = runaway(&next, wheel_speed, t + h);
+            diverged = runaway(&next, wheel_speed, t + h, bound);
             if diverged.is_some() {
                 break;
             }

@@ -381,3 +381,41 @@ proptest! {
         prop_assert!(t.reached, "{:?} ended {:?}", start, t.final_pose);
     }
 }
+
+#[test]
+fn unstable_gains_stop_at_the_bound_and_say_so_in_words() -> Result<(), FieldError> {
+    // k_alpha < 0 breaks the sheet's condition k_alpha + 5/3 k_beta - 2/pi k_rho > 0.
+    let start = Pose::new(-1.0, 0.5, 0.0);
+    let run = Run::polar(start, Pose::default(), Gains::new(3.0, -8.0, 1.5)?)?;
+    let t = sim(&run);
+    let d = t.diverged.as_ref().expect("these gains run away");
+    assert!(d.t > 0.0 && d.t < 10.0, "stopped at {} s", d.t);
+    assert!(
+        d.reason
+            .starts_with(&format!("diverged after {:.2} s: the distance", d.t)),
+        "{}",
+        d.reason
+    );
+    assert!(d.reason.contains("past 100 m"), "{}", d.reason);
+    assert!(d.reason.contains("unstable"), "{}", d.reason);
+    // What is kept (and plotted) never goes past the bound.
+    for s in &t.samples {
+        assert!(s.pose.x.hypot(s.pose.y) <= 100.0, "{s:?}");
+    }
+    assert!(t.final_position_error <= 100.0);
+    assert!(!t.reached);
+    Ok(())
+}
+
+#[test]
+fn a_far_start_with_stable_gains_is_not_called_diverged() -> Result<(), FieldError> {
+    // 50 m away: past the 100 m floor only if the bound ignored the start.
+    let run = Run {
+        duration: 60.0,
+        ..Run::polar(Pose::new(-50.0, 30.0, 1.0), Pose::default(), TEXTBOOK_GAINS)?
+    };
+    let t = sim(&run);
+    assert!(t.diverged.is_none(), "{:?}", t.diverged);
+    assert!(t.reached);
+    Ok(())
+}

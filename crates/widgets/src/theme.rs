@@ -1,6 +1,6 @@
 //! Sizes and colours shared by every page, for light and dark themes.
 
-use egui::{Color32, FontFamily, FontId, TextStyle};
+use egui::{Color32, FontFamily, FontId, Stroke, TextStyle};
 
 pub const BODY_SIZE: f32 = 16.0;
 pub const CODE_SIZE: f32 = 14.0;
@@ -24,6 +24,20 @@ pub fn accent(ui: &egui::Ui) -> Color32 {
     }
 }
 
+/// The `i`-th of a cycle of distinct colours, readable on both themes: one
+/// per wheel, per plotted series, per leg.
+pub fn palette(i: usize) -> Color32 {
+    const PALETTE: [Color32; 6] = [
+        Color32::from_rgb(230, 120, 40),
+        Color32::from_rgb(60, 150, 220),
+        Color32::from_rgb(90, 170, 80),
+        Color32::from_rgb(200, 80, 160),
+        Color32::from_rgb(170, 140, 40),
+        Color32::from_rgb(120, 110, 220),
+    ];
+    PALETTE[i % PALETTE.len()]
+}
+
 pub fn good_color(ui: &egui::Ui) -> Color32 {
     if ui.visuals().dark_mode {
         Color32::from_rgb(90, 200, 120)
@@ -45,6 +59,49 @@ pub fn warn_color(ui: &egui::Ui) -> Color32 {
 pub fn install(ctx: &egui::Context) {
     install_fonts(ctx);
     apply_text_styles(ctx);
+    outline_controls(ctx);
+}
+
+/// WCAG's minimum contrast for the parts of a control a learner must see
+/// (1.4.11, non-text contrast).
+pub const CONTROL_CONTRAST: f32 = 3.0;
+
+/// The outline of a control at rest (a radio button, a checkbox, a button),
+/// dark enough against the page to see without hovering.
+fn control_outline(dark: bool) -> Color32 {
+    if dark {
+        Color32::from_gray(150)
+    } else {
+        Color32::from_gray(110)
+    }
+}
+
+/// Unselected radio buttons and checkboxes are egui's faint grey blobs in
+/// the light theme: give every control at rest a visible outline, in both
+/// themes, so "not chosen" is as clear as "chosen".
+fn outline_controls(ctx: &egui::Context) {
+    for theme in [egui::Theme::Dark, egui::Theme::Light] {
+        ctx.style_mut_of(theme, |style| {
+            let dark = style.visuals.dark_mode;
+            style.visuals.widgets.inactive.bg_stroke = Stroke::new(1.0, control_outline(dark));
+        });
+    }
+}
+
+/// The contrast ratio of two colours, 1 to 21 (WCAG 2's definition).
+pub fn contrast(a: Color32, b: Color32) -> f32 {
+    fn channel(c: u8) -> f32 {
+        let c = f32::from(c) / 255.0;
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    }
+    let luminance =
+        |c: Color32| 0.2126 * channel(c.r()) + 0.7152 * channel(c.g()) + 0.0722 * channel(c.b());
+    let (la, lb) = (luminance(a), luminance(b));
+    (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
 }
 
 /// The lab's two fonts, cut down to what it draws (the formula crate owns

@@ -22,6 +22,68 @@ pub trait LabWidget {
     fn restore(&mut self, _state: &str) {}
 }
 
+/// Where, this frame, the widget being drawn keeps its animation flags.
+fn animation_id() -> egui::Id {
+    egui::Id::unique("kinolab-widget-animation")
+}
+
+/// Whether the widget being drawn was on screen, and whether it asked for
+/// another frame while it was not.
+#[derive(Clone, Copy, Default)]
+struct Animation {
+    off_screen: bool,
+    wanted: bool,
+}
+
+/// Draw one widget, remembering where it was: a widget scrolled off screen
+/// stops asking for frames (see [`animate`]) and starts again as soon as
+/// any of it is back in view.
+pub fn animated_scope<R>(
+    ui: &mut egui::Ui,
+    id: egui::Id,
+    add: impl FnOnce(&mut egui::Ui) -> R,
+) -> R {
+    let last: Option<egui::Rect> = ui.ctx().data(|d| d.get_temp(id));
+    let off_screen = last.is_some_and(|r| !ui.is_rect_visible(r));
+    let flags = animation_id();
+    ui.ctx().data_mut(|d| {
+        d.insert_temp(
+            flags,
+            Animation {
+                off_screen,
+                wanted: false,
+            },
+        );
+    });
+    let inner = ui.scope(add);
+    let rect = inner.response.rect;
+    let animation: Animation = ui.ctx().data_mut(|d| {
+        d.insert_temp(id, rect);
+        d.remove_temp(flags).unwrap_or_default()
+    });
+    if animation.wanted && ui.is_rect_visible(rect) {
+        // Scrolled back into view this frame: carry on.
+        crate::widget::animate(ui);
+    }
+    inner.inner
+}
+
+/// Ask for the next frame of a running animation, unless the widget is
+/// scrolled out of view (then it pauses where it is).
+pub fn animate(ui: &egui::Ui) {
+    let flags = animation_id();
+    let paused = ui.ctx().data_mut(|d| match d.get_temp::<Animation>(flags) {
+        Some(a) if a.off_screen => {
+            d.insert_temp(flags, Animation { wanted: true, ..a });
+            true
+        }
+        _ => false,
+    });
+    if !paused {
+        ui.ctx().request_repaint();
+    }
+}
+
 /// Builds a widget from its checked parameters.
 pub type Constructor = fn(&Params) -> Result<Box<dyn LabWidget>, String>;
 
@@ -55,6 +117,84 @@ pub fn feedback_ui(ui: &mut egui::Ui, feedback: Option<&Feedback>) {
         let prefix = if f.met { "Solved. " } else { "" };
         ui.label(RichText::new(format!("{prefix}{}", f.message)).color(color));
     }
+}
+
+/// Narrower than this, points, a widget stacks what it shows side by side.
+pub const NARROW: f32 = 560.0;
+
+/// Whether `ui` is too narrow for a widget's panels side by side.
+pub fn narrow(ui: &egui::Ui) -> bool {
+    ui.available_width() < NARROW
+}
+
+/// `count` panels side by side on a wide column, one under the other on a
+/// narrow one; `add(ui, i, width)` draws panel `i` at the width it gets.
+pub fn panels(ui: &mut egui::Ui, count: usize, mut add: impl FnMut(&mut egui::Ui, usize, f32)) {
+    if narrow(ui) || count < 2 {
+        let width = ui.available_width();
+        for i in 0..count {
+            ui.vertical(|ui| add(ui, i, width));
+        }
+        return;
+    }
+    let gap = ui.spacing().item_spacing.x;
+    let width = (ui.available_width() - gap * (count - 1) as f32) / count as f32;
+    ui.horizontal_top(|ui| {
+        for i in 0..count {
+            ui.vertical(|ui| {
+                ui.set_width(width);
+                add(ui, i, width);
+            });
+        }
+    });
+}
+
+/// A row of controls (sliders, buttons, choices): side by side, wrapping,
+/// on a wide column; one under the other on a narrow one. (egui cannot
+/// move a slider with its number and label to the next line on its own,
+/// so a row of sliders would run off a phone's screen.)
+pub fn control_row<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -> R {
+    if narrow(ui) {
+        ui.vertical(add).inner
+    } else {
+        ui.horizontal_wrapped(add).inner
+    }
+}
+
+/// Content that cannot get narrower (a grid of numbers, a wide formula)
+/// scrolls sideways when the column is too narrow, instead of running off
+/// the screen's edge.
+pub fn sideways<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -> R {
+    let width = ui.available_width();
+    // A page has several of these in one parent: each needs its own id.
+    egui::ScrollArea::horizontal()
+        .id_salt(ui.next_auto_id())
+        .max_width(width)
+        .show(ui, |ui| {
+            // Lay out for the column (centred content stays centred); only
+            // what is wider than the column scrolls.
+            ui.set_max_width(width);
+            add(ui)
+        })
+        .inner
+}
+
+/// A status text whose length changes with what the learner does, in a
+/// space at least `lines` lines tall, so that what follows it stays put.
+pub fn status_text(ui: &mut egui::Ui, text: impl Into<egui::WidgetText>, lines: usize) {
+    let row = ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let width = ui.available_width();
+    ui.allocate_ui_with_layout(
+        egui::vec2(width, 0.0),
+        egui::Layout::top_down(egui::Align::Min),
+        |ui| {
+            ui.set_min_size(egui::vec2(
+                width,
+                row * lines as f32 - ui.spacing().item_spacing.y,
+            ));
+            ui.label(text);
+        },
+    );
 }
 
 /// A parameter with a default in its schema.

@@ -130,7 +130,7 @@ fn the_person_exercise_wants_fresh_plans() {
     h.get_by_label("Check").click();
     h.run_steps(2);
     h.get_by_label_contains("touched something");
-    h.get_all_by_label("planning cost (ms per cell)")
+    h.get_all_by_label("planning cost (ms/cell)")
         .next()
         .unwrap()
         .set_value_accesskit(2.0);

@@ -58,7 +58,9 @@ fn js_package(release: bool) -> Result {
 pub fn dist() -> Result {
     ensure(Needs { browser: false })?;
     js_package(true)?;
-    run(&mut tool("trunk", &["build", "--release", "--offline"]))
+    run(&mut tool("trunk", &["build", "--release", "--offline"]))?;
+    // Brotli and gzip copies beside each file, for hosts that serve them.
+    run(&mut tool("node", &["web/precompress.mjs", "dist"]))
 }
 
 /// Build and serve the lab on http://127.0.0.1:8080.

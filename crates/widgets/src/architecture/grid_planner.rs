@@ -119,7 +119,7 @@ impl GridPlanner {
                 self.shown = None;
             }
         });
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(egui::Slider::new(&mut self.setup.cell, 0.1..=1.0).text("cell s (m)"));
             ui.add(egui::Slider::new(&mut self.setup.radius, 0.0..=0.6).text("robot radius (m)"));
         });
@@ -265,7 +265,7 @@ impl LabWidget for GridPlanner {
         );
         if let Some(shown) = &mut self.shown {
             *shown += CELLS_PER_SECOND * f64::from(ui.input(|i| i.stable_dt).min(0.1));
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
         let text = match &searches {
             Some((d, a)) => summary(d, a, self.setup.astar),

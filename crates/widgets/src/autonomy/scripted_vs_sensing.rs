@@ -41,12 +41,12 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
 
 impl ScriptedVsSensing {
     fn controls(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             let label = ui.label("How far parts stray from their spot (mm):");
             ui.add(egui::Slider::new(&mut self.setup.placement_mm, 0.0..=50.0).fixed_decimals(0))
                 .labelled_by(label.id);
         });
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             let label = ui.label("Sensing robot's measurement error (mm):");
             ui.add(egui::Slider::new(&mut self.setup.sensor_mm, 0.0..=30.0).fixed_decimals(0))
                 .labelled_by(label.id);

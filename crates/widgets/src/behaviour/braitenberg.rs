@@ -240,7 +240,7 @@ impl LabWidget for Vehicles {
     fn ui(&mut self, ui: &mut egui::Ui) {
         if self.playing {
             self.step();
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
         ui.horizontal(|ui| {
             if ui

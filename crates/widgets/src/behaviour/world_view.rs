@@ -6,19 +6,9 @@ use kinolab_world::{Pose, Shape as Obstacle, World};
 use crate::draw::PlaneView;
 use crate::draw::marks::star;
 
-/// A colour per behaviour, distinct in both themes.
-pub const PALETTE: [Color32; 6] = [
-    Color32::from_rgb(70, 140, 230),
-    Color32::from_rgb(230, 90, 70),
-    Color32::from_rgb(60, 170, 90),
-    Color32::from_rgb(200, 140, 30),
-    Color32::from_rgb(160, 90, 200),
-    Color32::from_rgb(40, 170, 170),
-];
-
-/// The colour of behaviour `i`.
+/// The colour of behaviour `i` (the lab's palette).
 pub fn colour(i: usize) -> Color32 {
-    PALETTE[i % PALETTE.len()]
+    crate::theme::palette(i)
 }
 
 /// The fence, the obstacles where they are at time `t`, lights and goal.

@@ -2,13 +2,17 @@
 //! with the limits on sliders.
 
 use egui::RichText;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Plot, PlotPoints};
 use kinolab_common::display::fixed;
 use kinolab_control::Profile;
 use serde::{Deserialize, Serialize};
 
+use crate::draw::plot::{series_legend, series_lines};
 use crate::link;
 use crate::widget::{LabWidget, Params, number};
+
+/// The plotted series, in palette order.
+const NAMES: [&str; 2] = ["speed v (m/s)", "distance s (m)"];
 
 /// The limits on the sliders, and what a link carries.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -58,7 +62,7 @@ impl LabWidget for Widget {
 
 impl SpeedProfile {
     fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(
                 egui::Slider::new(&mut self.distance, 0.05..=5.0)
                     .text("distance (m)")
@@ -87,15 +91,18 @@ impl SpeedProfile {
         Plot::new(ui.scope_id().with("speed-profile"))
             .width(width)
             .height(200.0)
-            .legend(Legend::default())
             .x_axis_label("t (s)")
             .include_y(0.0)
             .include_x(0.0)
             .allow_scroll(false)
             .show(ui, |plot| {
-                plot.line(Line::new("speed v (m/s)", speed).width(2.0));
-                plot.line(Line::new("distance s (m)", covered).width(2.0));
+                series_lines(
+                    plot,
+                    NAMES.into_iter().zip([speed, covered]).collect(),
+                    None,
+                );
             });
+        series_legend(ui, &NAMES, &[]);
         let shape = if p.cruise > 0.0 {
             format!(
                 "Trapezoid: ramps of {} s cover {} m together, then {} s at {} m/s.",

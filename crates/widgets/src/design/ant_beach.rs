@@ -143,7 +143,7 @@ impl AntBeach {
 impl LabWidget for AntBeach {
     fn ui(&mut self, ui: &mut egui::Ui) {
         let before = self.setup.clone();
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(
                 egui::Slider::new(&mut self.setup.size, 1.0..=ant::MAX_SIZE)
                     .logarithmic(true)

@@ -6,6 +6,7 @@
 //! generic tree walk answers instead.
 
 use egui::{Align2, Color32, FontId, RichText, Sense, Stroke, pos2, vec2};
+use kinolab_common::display::fixed;
 use kinolab_design::morphology::{between, chain};
 use kinolab_mechanism::{Model, Pose};
 
@@ -231,11 +232,11 @@ impl Morphology {
 fn describe(t: &Pose) -> String {
     let v = t.translation.vector;
     format!(
-        "({:.3}, {:.3}, {:.3}) m, turned {:.1}°",
-        v.x,
-        v.y,
-        v.z,
-        t.rotation.angle().to_degrees()
+        "({}, {}, {}) m, turned {}°",
+        fixed(v.x, 3),
+        fixed(v.y, 3),
+        fixed(v.z, 3),
+        fixed(t.rotation.angle().to_degrees(), 1)
     )
 }
 

@@ -207,6 +207,10 @@ impl ThreeSlots {
     }
 
     fn matrix_ui(&self, ui: &mut egui::Ui) {
+        crate::widget::sideways(ui, |ui| self.matrix_grid(ui));
+    }
+
+    fn matrix_grid(&self, ui: &mut egui::Ui) {
         egui::Grid::new(ui.scope_id().with("matrix"))
             .striped(true)
             .show(ui, |ui| {
@@ -276,7 +280,7 @@ impl LabWidget for ThreeSlots {
         ui.label(RichText::new("Every combination (hover a failure for why):").strong());
         self.matrix_ui(ui);
         if self.fill_matrix() {
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
         if self.task {
             ui.separator();

@@ -61,6 +61,21 @@ impl Labels {
     }
 }
 
+/// A short formula (a subset of TeX, as lessons write it) typeset like the
+/// lessons' formulas, at body size; text that does not parse is shown as is.
+pub fn formula(ui: &mut egui::Ui, tex: &str) -> egui::Response {
+    match kinolab_formula::parse(tex) {
+        Ok(math) => {
+            let style = kinolab_formula::layout::MathStyle {
+                size: crate::theme::BODY_SIZE,
+                color: ui.visuals().text_color(),
+            };
+            kinolab_formula::layout::math_widget(ui, &math, &style)
+        }
+        Err(_) => ui.label(tex),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,6 +8,7 @@ mod grid;
 mod handle;
 pub mod labels;
 pub mod marks;
+pub mod plot;
 pub mod scene3d;
 mod view;
 

@@ -6,7 +6,7 @@
 //! sets the frequency, so the network changes gait on the move.
 
 use egui::{RichText, Sense, Stroke, vec2};
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{Plot, PlotPoints};
 use kinolab_common::Feedback;
 use kinolab_common::display::fixed;
 use kinolab_common::random::unit_hash;
@@ -14,6 +14,7 @@ use kinolab_locomotion::network::{Model, Network, State};
 use kinolab_locomotion::speed::quadruped_pace;
 use serde::{Deserialize, Serialize};
 
+use crate::draw::plot::{series_legend, series_lines};
 use crate::widget::{LabWidget, Params, feedback_ui};
 use crate::{link, theme};
 
@@ -283,22 +284,21 @@ impl CpgLab {
         let wrap = |e: f64| e - e.round();
         Plot::new(ui.scope_id().with("lags"))
             .height(160.0)
-            .legend(Legend::default())
             .x_axis_label("t (s)")
             .y_axis_label("lag error (cycles)")
             .include_y(-0.5)
             .include_y(0.5)
             .allow_scroll(false)
             .show(ui, |plot| {
-                for (k, name) in LEGS.iter().enumerate().skip(1) {
-                    let points: PlotPoints<'static> = self
-                        .history
+                let lags = (1..LEGS.len()).map(|k| -> PlotPoints<'static> {
+                    self.history
                         .iter()
                         .map(|(t, l)| [*t, wrap(l[k] - targets[k])])
-                        .collect();
-                    plot.line(Line::new(*name, points).width(2.0));
-                }
+                        .collect()
+                });
+                series_lines(plot, LEGS[1..].iter().copied().zip(lags).collect(), None);
             });
+        series_legend(ui, &LEGS[1..], &[]);
     }
 }
 
@@ -326,7 +326,7 @@ impl LabWidget for CpgLab {
         if self.playing {
             let dt = f64::from(ui.input(|i| i.stable_dt).min(0.1));
             self.advance(dt);
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

@@ -115,7 +115,7 @@ impl Setup {
 
 impl GaitStudio {
     fn controls(&mut self, ui: &mut egui::Ui, gait: &Gait) {
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             let before = self.setup.preset.clone();
             egui::ComboBox::new(ui.scope_id().with("preset"), "gait")
                 .selected_text(&self.setup.preset)
@@ -135,17 +135,17 @@ impl GaitStudio {
             }
             ui.add(egui::Slider::new(&mut self.setup.tau, 0.0..=0.999).text("τ (cycle)"));
         });
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(
                 egui::Slider::new(&mut self.setup.duty_factor, 0.05..=0.95).text("β duty factor"),
             );
             ui.add(egui::Slider::new(&mut self.setup.stride, 0.0..=0.4).text("L stride (m)"));
         });
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(egui::Slider::new(&mut self.setup.com[0], -0.2..=0.2).text("CoM x (m)"));
             ui.add(egui::Slider::new(&mut self.setup.com[1], -0.2..=0.2).text("CoM y (m)"));
         });
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             for (leg, phase) in gait.legs.iter().zip(self.setup.phases.iter_mut()) {
                 ui.add(
                     egui::Slider::new(phase, 0.0..=0.999)
@@ -401,7 +401,7 @@ impl LabWidget for GaitStudio {
             self.setup.tau = (self.setup.tau + dt / CYCLE_SECONDS)
                 .rem_euclid(1.0)
                 .min(0.999);
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
         let now = gait.at(self.setup.tau);
         let tau = self.setup.tau;

@@ -3,15 +3,19 @@
 //! polygon of the feet on the ground and the centre of mass above it; a
 //! plot follows one leg's joint angles through the cycle.
 
-use egui::{Color32, RichText, Sense, Stroke, vec2};
-use egui_plot::{Legend, Line, Plot, PlotPoints, VLine};
+use egui::{RichText, Sense, Stroke, vec2};
+use egui_plot::{Plot, PlotPoints};
 use kinolab_common::display::fixed;
 use kinolab_locomotion::walker::{Step, Walker};
 use kinolab_mechanism::Vector3;
 use serde::{Deserialize, Serialize};
 
+use crate::draw::plot::{REFERENCE, series_legend, series_lines};
 use crate::draw::scene3d::{Camera, ViewKind, draw_capsule, draw_grid};
 use crate::widget::{LabWidget, Params};
+
+/// The plotted joints of the left front leg, in the model's order.
+const JOINTS: [&str; 3] = ["coxa", "femur", "tibia"];
 use crate::{link, theme};
 
 const GAITS: [&str; 4] = [
@@ -255,16 +259,14 @@ impl HexapodWalker {
         };
         Plot::new(ui.scope_id().with("walker-joints"))
             .height(160.0)
-            .legend(Legend::default())
             .x_axis_label("τ (cycle)")
             .y_axis_label("left front leg (°)")
             .allow_scroll(false)
             .show(ui, |plot| {
-                for (k, name) in ["coxa", "femur", "tibia"].iter().enumerate() {
-                    plot.line(Line::new(*name, series(k)).width(2.0));
-                }
-                plot.vline(VLine::new("now", tau).color(Color32::GRAY));
+                let values = (0..JOINTS.len()).map(series);
+                series_lines(plot, JOINTS.into_iter().zip(values).collect(), Some(tau));
             });
+        series_legend(ui, &JOINTS, &[("now", REFERENCE)]);
     }
 }
 
@@ -280,7 +282,7 @@ impl LabWidget for HexapodWalker {
         if self.playing {
             let dt = f64::from(ui.input(|i| i.stable_dt).min(0.1));
             self.advance((self.tau + dt * self.setup.rate).rem_euclid(1.0));
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

@@ -4,15 +4,19 @@
 //! follows x, ẋ and the ZMP through the run.
 
 use egui::{Color32, Pos2, RichText, Sense, Stroke, vec2};
-use egui_plot::{Legend, Line, Plot, PlotPoints, VLine};
+use egui_plot::{Line, Plot, PlotPoints};
 use kinolab_common::Feedback;
 use kinolab_common::display::fixed;
 use kinolab_locomotion::balance::{CartTable, Recovery};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::PlaneView;
+use crate::draw::plot::{REFERENCE, series_legend, series_lines};
 use crate::widget::{LabWidget, Params, feedback_ui};
 use crate::{link, theme};
+
+/// The plotted series, in palette order.
+const NAMES: [&str; 3] = ["x (CoM)", "v (CoM speed)", "ZMP"];
 
 /// The foot, m: heel and toe along x, the ankle at 0.
 const HEEL: f64 = -0.05;
@@ -153,17 +157,15 @@ impl ZmpCartTable {
         };
         Plot::new(ui.scope_id().with("zmp-plot"))
             .height(170.0)
-            .legend(Legend::default())
             .x_axis_label("t (s)")
             .y_axis_label("m, m/s")
             .allow_scroll(false)
             .show(ui, |plot| {
-                plot.line(Line::new("x (CoM)", series(&|s| s.x)).width(2.0));
-                plot.line(Line::new("v (CoM speed)", series(&|s| s.xd)).width(2.0));
-                plot.line(Line::new("ZMP", series(&|s| s.zmp)).width(2.0));
-                plot.line(Line::new("toe", series(&|_| TOE)).color(Color32::GRAY));
-                plot.vline(VLine::new("now", self.t).color(Color32::GRAY));
+                let values = [series(&|s| s.x), series(&|s| s.xd), series(&|s| s.zmp)];
+                series_lines(plot, NAMES.into_iter().zip(values).collect(), Some(self.t));
+                plot.line(Line::new("toe", series(&|_| TOE)).color(REFERENCE));
             });
+        series_legend(ui, &NAMES, &[("toe and now", REFERENCE)]);
     }
 
     fn verdict(&self) -> String {
@@ -193,7 +195,7 @@ impl LabWidget for ZmpCartTable {
                 self.t = DURATION;
                 self.playing = false;
             }
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
         if self.task {
             ui.separator();

@@ -43,15 +43,7 @@ impl RobotView {
 
 /// One colour per wheel, cycling, readable on both themes.
 pub(crate) fn wheel_color(i: usize) -> Color32 {
-    const PALETTE: [Color32; 6] = [
-        Color32::from_rgb(230, 120, 40),
-        Color32::from_rgb(60, 150, 220),
-        Color32::from_rgb(90, 170, 80),
-        Color32::from_rgb(200, 80, 160),
-        Color32::from_rgb(170, 140, 40),
-        Color32::from_rgb(120, 110, 220),
-    ];
-    PALETTE[i % PALETTE.len()]
+    crate::theme::palette(i)
 }
 
 fn add(p: [f64; 2], d: [f64; 2], k: f64) -> [f64; 2] {
@@ -151,6 +143,7 @@ pub(crate) fn draw_icr(
     icr: &Icr,
     color: Color32,
     clip: egui::Rect,
+    wheels: &[egui::Rect],
 ) {
     let stroke = Stroke::new(2.5, color);
     match *icr {
@@ -160,13 +153,16 @@ pub(crate) fn draw_icr(
                 painter.circle_stroke(at, 7.0, stroke);
                 painter.line_segment([at - vec2(10.0, 0.0), at + vec2(10.0, 0.0)], stroke);
                 painter.line_segment([at - vec2(0.0, 10.0), at + vec2(0.0, 10.0)], stroke);
-                painter.text(
-                    at + vec2(10.0, -10.0),
-                    egui::Align2::LEFT_BOTTOM,
-                    "ICR",
+                // The label goes beside the mark, clear of the wheels.
+                let galley = painter.layout_no_wrap(
+                    "ICR".to_owned(),
                     egui::FontId::proportional(12.0),
                     color,
                 );
+                let mut taken = wheels.to_vec();
+                taken.push(egui::Rect::from_center_size(at, vec2(20.0, 20.0)));
+                let spot = crate::draw::labels::place(&taken, at, galley.size());
+                painter.galley(spot.shrink(1.0).min, galley, color);
             } else {
                 let from = view.robot([0.0, 0.0]);
                 let dir = (at - from).normalized();
@@ -245,4 +241,12 @@ pub(crate) fn draw_frame(painter: &Painter, view: &RobotView, color: Color32, le
         egui::FontId::proportional(12.0),
         color,
     );
+}
+
+/// Where the wheels are on screen, for labels to keep clear of.
+pub(crate) fn wheel_rects(view: &RobotView, wheels: &[kinolab_wheels::Wheel]) -> Vec<egui::Rect> {
+    wheels
+        .iter()
+        .map(|w| egui::Rect::from_center_size(view.robot(w.position()), vec2(30.0, 30.0)))
+        .collect()
 }

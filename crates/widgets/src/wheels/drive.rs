@@ -9,7 +9,9 @@ use kinolab_common::display::{fixed, signed};
 use kinolab_wheels::{Chassis, Icr, Vector3, WheelKind, integrate, twist_icr};
 use serde::{Deserialize, Serialize};
 
-use super::chassis::{RobotView, contact_point, draw_frame, draw_icr, draw_wheel, wheel_color};
+use super::chassis::{
+    RobotView, contact_point, draw_frame, draw_icr, draw_wheel, wheel_color, wheel_rects,
+};
 use crate::draw::{PlaneView, grid, placed, placed_dir};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
@@ -291,7 +293,7 @@ impl Drive {
             }
         }
         if twist.norm() > 0.0 {
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 
@@ -338,7 +340,15 @@ impl Drive {
                 painter.arrow(from, to - from, Stroke::new(2.0, wheel_color(i)));
             }
         }
-        draw_icr(painter, &view, &twist_icr(&twist), theme::accent(ui), rect);
+        let wheels = wheel_rects(&view, self.chassis.wheels());
+        draw_icr(
+            painter,
+            &view,
+            &twist_icr(&twist),
+            theme::accent(ui),
+            rect,
+            &wheels,
+        );
     }
 
     /// The twist, ICR and pose in words, and what each wheel does.

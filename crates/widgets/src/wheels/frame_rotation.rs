@@ -56,12 +56,12 @@ impl FrameRotation {
         );
         ui.add(
             egui::Slider::new(&mut s.inertial[0], -1.0..=1.0)
-                .text("speed along the world's x axis (m/s)")
+                .text("world x speed (m/s)")
                 .fixed_decimals(2),
         );
         ui.add(
             egui::Slider::new(&mut s.inertial[1], -1.0..=1.0)
-                .text("speed along the world's y axis (m/s)")
+                .text("world y speed (m/s)")
                 .fixed_decimals(2),
         );
         ui.add(
@@ -121,21 +121,23 @@ impl FrameRotation {
     fn equation(&self, ui: &mut egui::Ui, r: &kinolab_wheels::Matrix3<f64>, robot: &Vector3<f64>) {
         let mono = |s: String| RichText::new(s).monospace();
         ui.label("robot-frame motion = R(θ) × world motion:");
-        egui::Grid::new(ui.scope_id().with("r"))
-            .num_columns(7)
-            .spacing(vec2(8.0, 2.0))
-            .show(ui, |ui| {
-                for row in 0..3 {
-                    ui.label(mono(signed(robot[row], 3)).color(theme::good_color(ui)));
-                    ui.label(if row == 1 { "=" } else { " " });
-                    for col in 0..3 {
-                        ui.label(mono(signed(r[(row, col)], 3)));
+        crate::widget::sideways(ui, |ui| {
+            egui::Grid::new(ui.scope_id().with("r"))
+                .num_columns(7)
+                .spacing(vec2(8.0, 2.0))
+                .show(ui, |ui| {
+                    for row in 0..3 {
+                        ui.label(mono(signed(robot[row], 3)).color(theme::good_color(ui)));
+                        ui.label(if row == 1 { "=" } else { " " });
+                        for col in 0..3 {
+                            ui.label(mono(signed(r[(row, col)], 3)));
+                        }
+                        ui.label(if row == 1 { "×" } else { " " });
+                        ui.label(mono(signed(self.setup.inertial[row], 3)));
+                        ui.end_row();
                     }
-                    ui.label(if row == 1 { "×" } else { " " });
-                    ui.label(mono(signed(self.setup.inertial[row], 3)));
-                    ui.end_row();
-                }
-            });
+                });
+        });
     }
 }
 

@@ -45,27 +45,25 @@ fn cell(row: usize, e: &Entrant, spent: f64) -> String {
 impl ArchitectureArena {
     pub(super) fn board(&self, ui: &mut egui::Ui) {
         let Some(arena) = &self.arena else { return };
-        egui::ScrollArea::horizontal()
-            .id_salt("board")
-            .show(ui, |ui| {
-                egui::Grid::new(ui.scope_id().with("scores"))
-                    .striped(true)
-                    .num_columns(4)
-                    .show(ui, |ui| {
-                        ui.label("");
-                        for (i, name) in NAMES.iter().enumerate() {
-                            ui.label(RichText::new(*name).strong().color(COLOURS[i]));
+        crate::widget::sideways(ui, |ui| {
+            egui::Grid::new(ui.scope_id().with("scores"))
+                .striped(true)
+                .num_columns(4)
+                .show(ui, |ui| {
+                    ui.label("");
+                    for (i, name) in NAMES.iter().enumerate() {
+                        ui.label(RichText::new(*name).strong().color(COLOURS[i]));
+                    }
+                    ui.end_row();
+                    for (row, label) in ROWS.iter().enumerate() {
+                        ui.label(*label);
+                        for (e, spent) in arena.entrants.iter().zip(self.spent) {
+                            ui.label(cell(row, e, spent));
                         }
                         ui.end_row();
-                        for (row, label) in ROWS.iter().enumerate() {
-                            ui.label(*label);
-                            for (e, spent) in arena.entrants.iter().zip(self.spent) {
-                                ui.label(cell(row, e, spent));
-                            }
-                            ui.end_row();
-                        }
-                    });
-            });
+                    }
+                });
+        });
         ui.label(RichText::new("Shaded cells: the chosen robot's map (darker where a bumper felt something); dashes: its plan; faint cells: the search it is running. Model age: how old the sensing behind the plan was while the robot acted.").small());
     }
 

@@ -48,7 +48,7 @@ impl ArchitectureArena {
         ui.add(
             egui::Slider::new(&mut self.design.planning_cost_ms, 0.0..=20.0)
                 .step_by(0.5)
-                .text("planning cost (ms per cell)"),
+                .text("planning cost (ms/cell)"),
         );
         if self.design != before {
             self.playing = false;

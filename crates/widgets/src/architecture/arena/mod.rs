@@ -198,7 +198,7 @@ impl LabWidget for ArchitectureArena {
             for _ in 0..self.speed {
                 self.step();
             }
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

@@ -273,7 +273,7 @@ impl LabWidget for Arena {
         self.timeline(ui);
         self.task_ui(ui);
         if self.playing {
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

@@ -251,7 +251,7 @@ impl ComponentLab {
             self.playing = false;
             self.seek(t);
         }
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(
                 egui::Slider::new(&mut self.setup.fixed, 0.0..=0.5)
                     .text("latency (s)")
@@ -264,7 +264,7 @@ impl ComponentLab {
             );
             ui.add(egui::Slider::new(&mut self.setup.loss, 0.0..=0.5).text("loss"));
         });
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             if matches!(self.setup.system.as_str(), "newest-vs-timed" | "robot") {
                 ui.add(
                     egui::Slider::new(&mut self.setup.period, 0.02..=1.0)
@@ -361,20 +361,17 @@ impl ComponentLab {
     /// Each component's state and what it says of itself.
     fn statuses(&self, ui: &mut egui::Ui) {
         let Some(rt) = self.rt.as_ref() else { return };
-        egui::Grid::new(ui.scope_id().with("statuses"))
-            .num_columns(2)
-            .spacing([12.0, 2.0])
-            .show(ui, |ui| {
-                for c in rt.view() {
-                    ui.label(egui::RichText::new(&c.name).strong().size(12.5));
-                    let state = match &c.waiting_on {
-                        Some(p) => format!("blocked on {p}"),
-                        None => c.state.name().to_owned(),
-                    };
-                    ui.label(egui::RichText::new(format!("{state}: {}", c.status)).size(12.5));
-                    ui.end_row();
-                }
+        // A line each, wrapping: a status can be long and the column narrow.
+        for c in rt.view() {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(egui::RichText::new(&c.name).strong().size(12.5));
+                let state = match &c.waiting_on {
+                    Some(p) => format!("blocked on {p}"),
+                    None => c.state.name().to_owned(),
+                };
+                ui.label(egui::RichText::new(format!("{state}: {}", c.status)).size(12.5));
             });
+        }
     }
 
     fn task_ui(&mut self, ui: &mut egui::Ui) {
@@ -422,7 +419,7 @@ impl LabWidget for ComponentLab {
             if self.now() >= self.until {
                 self.playing = false;
             }
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

@@ -3,12 +3,13 @@
 
 use std::sync::{Arc, Mutex};
 
-use egui::{Color32, RichText};
-use egui_plot::{Legend, Line, Plot, PlotPoints, VLine};
+use egui::RichText;
+use egui_plot::{Plot, PlotPoints};
 use kinolab_common::angle::wrap;
 use kinolab_control::{Sample, Trajectory};
 
 use super::Playground;
+use crate::draw::plot::{REFERENCE, series_legend, series_lines};
 use crate::export::{png_of, request_save};
 
 /// Where a requested screen capture lands when it arrives.
@@ -63,24 +64,32 @@ impl Playground {
             Plot::new(base.with(id))
                 .width(width)
                 .height(170.0)
-                .legend(Legend::default())
                 .link_axis(link, [true, false])
                 .y_axis_label(y_label.to_owned())
                 .allow_scroll(false)
         };
+        let polar = ["ρ (m)", "α (rad)", "β (rad)"];
         plot("polar-plot", "ρ (m), α β (rad)").show(ui, |plot| {
-            plot.line(Line::new("ρ", series(&|s| s.polar.rho)).width(2.0));
-            plot.line(Line::new("α", series(&|s| s.polar.alpha)).width(2.0));
-            plot.line(Line::new("β", series(&|s| s.polar.beta)).width(2.0));
-            plot.vline(VLine::new("now", cursor).color(Color32::GRAY));
+            let values = [
+                series(&|s| s.polar.rho),
+                series(&|s| s.polar.alpha),
+                series(&|s| s.polar.beta),
+            ];
+            series_lines(plot, polar.into_iter().zip(values).collect(), Some(cursor));
         });
+        series_legend(ui, &polar, &[("now", REFERENCE)]);
+        let command = ["v (m/s)", "ω (rad/s)"];
         plot("command-plot", "v (m/s), ω (rad/s)")
             .x_axis_label("t (s)")
             .show(ui, |plot| {
-                plot.line(Line::new("v", series(&|s| s.v)).width(2.0));
-                plot.line(Line::new("ω", series(&|s| s.omega)).width(2.0));
-                plot.vline(VLine::new("now", cursor).color(Color32::GRAY));
+                let values = [series(&|s| s.v), series(&|s| s.omega)];
+                series_lines(
+                    plot,
+                    command.into_iter().zip(values).collect(),
+                    Some(cursor),
+                );
             });
+        series_legend(ui, &command, &[("now", REFERENCE)]);
         let area = egui::Rect::from_min_max(top, egui::pos2(top.x + width, ui.cursor().min.y));
         if ui.button("Save plots as PNG").clicked() {
             self.request_capture(ui, area);

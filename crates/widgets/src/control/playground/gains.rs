@@ -2,7 +2,7 @@
 //! (k_α, k_β) plane with the stable regions and the conditions.
 
 use egui::{RichText, Stroke};
-use egui_plot::{Legend, Plot, PlotUi, Points, Polygon};
+use egui_plot::{Plot, PlotUi, Points, Polygon};
 use kinolab_common::angle::snap;
 use kinolab_common::display::fixed;
 use kinolab_control::{Direction, Gains};
@@ -16,13 +16,13 @@ fn slider(
     range: std::ops::RangeInclusive<f64>,
     text: &str,
     decimals: usize,
-) {
+) -> egui::Response {
     ui.add(
         egui::Slider::new(value, range)
             .text(text)
             .step_by(10f64.powi(-(decimals as i32)))
             .fixed_decimals(decimals),
-    );
+    )
 }
 
 fn direction_name(d: Direction) -> &'static str {
@@ -39,7 +39,7 @@ const B_MIN: f64 = -10.0;
 
 impl Playground {
     pub(super) fn gain_sliders(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             let g = &mut self.set.gains;
             slider(ui, &mut g[0], -2.0..=10.0, "k_ρ", 1);
             slider(ui, &mut g[1], -5.0..=20.0, "k_α", 1);
@@ -69,17 +69,18 @@ impl Playground {
             }
             Err(e) => (e, theme::warn_color(ui)),
         };
-        ui.label(RichText::new(text).color(color));
+        // Two lines kept whatever the verdict, so the plot below never moves.
+        crate::widget::status_text(ui, RichText::new(text).color(color), 2);
     }
 
     pub(super) fn effects(&mut self, ui: &mut egui::Ui) {
         let s = &mut self.set;
         let open = s.slip > 0.0 || s.push > 0.0 || s.control_rate > 0.0 || s.max_wheel_speed > 0.0;
-        egui::CollapsingHeader::new("Real-world effects: slip, pushes, control rate, wheel limit")
+        egui::CollapsingHeader::new("Real-world effects")
             .id_salt(ui.scope_id().with("effects"))
             .default_open(open)
             .show(ui, |ui| {
-                ui.horizontal_wrapped(|ui| {
+                crate::widget::control_row(ui, |ui| {
                     slider(ui, &mut s.slip, 0.0..=0.5, "slip", 2);
                     slider(ui, &mut s.push, 0.0..=0.2, "push (m/s)", 2);
                     ui.add(
@@ -91,21 +92,17 @@ impl Playground {
                         s.seed = kinolab_common::random::hash(s.seed, 0, 0) % 1_000_000;
                     }
                 });
-                ui.horizontal_wrapped(|ui| {
-                    slider(
-                        ui,
-                        &mut s.control_rate,
-                        0.0..=100.0,
-                        "controller rate (Hz, 0 = continuous)",
-                        0,
-                    );
+                crate::widget::control_row(ui, |ui| {
+                    slider(ui, &mut s.control_rate, 0.0..=100.0, "control rate (Hz)", 0)
+                        .on_hover_text("0 means the controller acts continuously");
                     slider(
                         ui,
                         &mut s.max_wheel_speed,
                         0.0..=60.0,
-                        "wheel limit (rad/s, 0 = none)",
+                        "wheel limit (rad/s)",
                         0,
-                    );
+                    )
+                    .on_hover_text("0 means the wheels have no speed limit");
                 });
             });
     }
@@ -118,7 +115,6 @@ impl Playground {
         Plot::new(ui.scope_id().with("gain-plane"))
             .width(width)
             .height(300.0)
-            .legend(Legend::default().position(egui_plot::Corner::LeftBottom))
             .x_axis_label("k_α")
             .y_axis_label("k_β")
             .allow_drag(false)
@@ -144,6 +140,14 @@ impl Playground {
                     picked = Some([snap(p.x, 0.1), snap(p.y, 0.1)]);
                 }
             });
+        crate::draw::plot::legend(
+            ui,
+            &[
+                ("locally stable", good.gamma_multiply(0.5)),
+                ("strongly stable", good),
+                ("your gains", accent),
+            ],
+        );
         if let Some([a, b]) = picked {
             self.set.gains[1] = a.clamp(-5.0, 20.0);
             self.set.gains[2] = b.clamp(-10.0, 5.0);
@@ -201,7 +205,7 @@ fn conditions(ui: &mut egui::Ui, g: &Gains) {
                     ("fails", theme::warn_color(ui))
                 };
                 ui.label(RichText::new(mark).color(color));
-                ui.label(RichText::new(c.expression).monospace());
+                crate::draw::labels::formula(ui, &tex(c.expression));
                 ui.label(fixed(c.value, 3));
                 ui.end_row();
             }
@@ -222,4 +226,40 @@ fn conditions(ui: &mut egui::Ui, g: &Gains) {
         "Eigenvalues of the linearised loop: {}.",
         eig.join(", ")
     ));
+}
+
+/// The core's condition (plain text such as `k_alpha - k_rho > 0`) as TeX,
+/// so it is typeset the way the lesson writes it.
+fn tex(expression: &str) -> String {
+    [
+        ("k_alpha", "k_\\alpha"),
+        ("k_beta", "k_\\beta"),
+        ("k_rho", "k_\\rho"),
+        ("5/3", "\\frac{5}{3}"),
+        ("2/pi", "\\frac{2}{\\pi}"),
+    ]
+    .iter()
+    .fold(expression.to_owned(), |text, (plain, tex)| {
+        text.replace(plain, tex)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn every_condition_reads_as_a_formula() {
+        let g = kinolab_control::TEXTBOOK_GAINS;
+        for c in g.stability().conditions {
+            let tex = super::tex(c.expression);
+            assert!(
+                !["k_a", "k_b", "k_r", "/"].iter().any(|p| tex.contains(p)),
+                "{tex}"
+            );
+            kinolab_formula::parse(&tex).unwrap_or_else(|e| panic!("{tex}: {e}"));
+        }
+        assert_eq!(
+            super::tex("k_alpha + 5/3 k_beta - 2/pi k_rho > 0"),
+            "k_\\alpha + \\frac{5}{3} k_\\beta - \\frac{2}{\\pi} k_\\rho > 0"
+        );
+    }
 }

@@ -170,7 +170,7 @@ impl LabWidget for Playground {
         }
         self.exercise_ui(ui);
         if self.set != before {
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

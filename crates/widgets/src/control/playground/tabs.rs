@@ -43,7 +43,12 @@ impl Playground {
             RichText::new("Drag the dots to move start and goal, the rings to turn them.").small(),
         );
         self.playback(ui, t.samples.last().map_or(0.0, |s| s.t));
-        ui.label(summary(&t));
+        let text = RichText::new(summary(&t));
+        ui.label(if t.diverged.is_some() {
+            text.color(theme::warn_color(ui))
+        } else {
+            text
+        });
         self.plots(ui, &t, width);
         self.exports(ui, &[("closed", &t)]);
     }
@@ -56,7 +61,7 @@ impl Playground {
                 self.cursor = end;
                 self.playing = false;
             } else {
-                ui.ctx().request_repaint();
+                crate::widget::animate(ui);
             }
         }
         ui.horizontal(|ui| {
@@ -76,7 +81,7 @@ impl Playground {
     }
 
     pub(super) fn many_tab(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
+        crate::widget::control_row(ui, |ui| {
             ui.add(
                 egui::Slider::new(&mut self.set.many_count, 4..=100).text("starts on a 1 m circle"),
             );
@@ -138,9 +143,10 @@ impl Playground {
     pub(super) fn compare_tab(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             let label = ui.label("Plan:");
+            let width = ui.available_width().min(360.0);
             ui.add(
                 egui::TextEdit::singleline(&mut self.set.plan)
-                    .desired_width(360.0)
+                    .desired_width(width)
                     .font(egui::TextStyle::Monospace),
             )
             .labelled_by(label.id);
@@ -165,14 +171,11 @@ impl Playground {
             .collect();
         let mut keep: Vec<Pose> = nominal.iter().step_by(20).map(|s| s.pose).collect();
         keep.push(self.set.start);
-        let half = ((ui.available_width().min(900.0) - 12.0) / 2.0).max(150.0);
-        ui.horizontal_top(|ui| {
-            for (title, t) in [("Open loop", &open), ("Closed loop", &closed)] {
-                ui.vertical(|ui| {
-                    ui.label(RichText::new(title).strong());
-                    self.compare_floor(ui, half, &keep, &nominal, &plan.end(), t);
-                });
-            }
+        let runs = [("Open loop", &open), ("Closed loop", &closed)];
+        crate::widget::panels(ui, runs.len(), |ui, i, width| {
+            let (title, t) = runs[i];
+            ui.label(RichText::new(title).strong());
+            self.compare_floor(ui, width.min(450.0), &keep, &nominal, &plan.end(), t);
         });
         ui.label(RichText::new("Grey: the plan as drawn on paper. Both robots meet the same slip and pushes (same seed).").small());
         self.playback(ui, open.samples.last().map_or(0.0, |s| s.t));
@@ -213,6 +216,12 @@ impl Playground {
 
 /// A run in one sentence.
 pub(super) fn summary(t: &Trajectory) -> String {
+    if let Some(d) = &t.diverged {
+        return format!(
+            "{}. The plots show the run up to that moment.",
+            sentence(&d.reason)
+        );
+    }
     let reached = match t.time_to_goal {
         Some(s) => format!(
             "Reached (within 1 mm and 0.1°, and stayed) after {} s",
@@ -230,4 +239,13 @@ pub(super) fn summary(t: &Trajectory) -> String {
         fixed(t.path_length, 2),
         fixed(t.peak_wheel_speed, 1)
     )
+}
+
+/// The core's reason as the start of a sentence: "Diverged after …".
+fn sentence(reason: &str) -> String {
+    let mut chars = reason.chars();
+    match chars.next() {
+        Some(first) => first.to_uppercase().chain(chars).collect(),
+        None => String::new(),
+    }
 }

@@ -189,7 +189,7 @@ impl LabWidget for Sandbox {
         }
         let mapping = self.analysis.basins.as_ref().is_some_and(|m| !m.done());
         if held || mapping {
-            ui.ctx().request_repaint();
+            crate::widget::animate(ui);
         }
     }
 

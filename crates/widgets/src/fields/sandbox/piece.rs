@@ -207,7 +207,10 @@ impl Piece {
     /// A one-line description for the list.
     pub fn title(&self) -> String {
         match self.kind {
-            Kind::Uniform => format!("uniform towards {:.0}°", self.direction_deg),
+            Kind::Uniform => format!(
+                "uniform towards {}°",
+                kinolab_common::display::fixed(self.direction_deg, 0)
+            ),
             k => format!("{} · {}", k.name(), self.profile.name()),
         }
     }

@@ -96,7 +96,10 @@ impl Viewer {
                 None => "moves to keep the loop closed".into(),
             };
             let value = fixed(to_shown(&self.model, v, self.q[v]), 1);
-            ui.label(RichText::new(format!("{value}{unit}  ({why})")).italics());
+            // Wraps inside its grid cell: the reason can be long.
+            ui.add(
+                egui::Label::new(RichText::new(format!("{value}{unit}  ({why})")).italics()).wrap(),
+            );
         }
         ui.end_row();
         changed
@@ -174,10 +177,45 @@ impl Viewer {
                 }
             });
         }
+        self.home_note(ui);
         if changed {
             self.settle();
             self.target = None;
             self.ik_note = None;
+        }
+    }
+
+    /// Joints whose range excludes 0 start at their nearest limit, not at
+    /// 0: say so, so that a home pose such as the Panda's q4 = −4° is no
+    /// surprise.
+    fn home_note(&self, ui: &mut egui::Ui) {
+        let notes: Vec<String> = self
+            .driven
+            .iter()
+            .filter_map(|&v| {
+                let j = self.model.variable_joint(v)?;
+                let [lo, hi] = j.limits?;
+                if lo <= 0.0 && 0.0 <= hi {
+                    return None;
+                }
+                let unit = if j.kind == JointKind::Prismatic {
+                    " m"
+                } else {
+                    "°"
+                };
+                let shown = |x: f64| fixed(to_shown(&self.model, v, x), 0);
+                let home = if lo > 0.0 { lo } else { hi };
+                Some(format!(
+                    "{} starts at {}{unit}: its range, {}{unit} to {}{unit}, does not include 0.",
+                    j.name,
+                    shown(home),
+                    shown(lo),
+                    shown(hi)
+                ))
+            })
+            .collect();
+        for note in notes {
+            ui.label(RichText::new(note).small());
         }
     }
 

@@ -11,7 +11,7 @@ use super::{ANGLE_STEP, GRID, Task, Workbench};
 use crate::draw::{grid, handle};
 use crate::theme;
 use crate::wheels::chassis::{
-    RobotView, draw_frame, draw_icr, draw_wheel, draw_zero_motion_line, wheel_color,
+    RobotView, draw_frame, draw_icr, draw_wheel, draw_zero_motion_line, wheel_color, wheel_rects,
 };
 
 impl Workbench {
@@ -55,6 +55,7 @@ impl Workbench {
             &analysis.icr,
             theme::accent(ui),
             painter.clip_rect(),
+            &wheel_rects(view, self.chassis.wheels()),
         );
         if let Task::Goal(Goal::IcrAt { x, y, .. }) = self.task {
             let at = view.robot([x, y]);

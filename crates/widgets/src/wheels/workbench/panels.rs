@@ -72,6 +72,15 @@ impl Workbench {
             if ui.button("Reset").clicked() {
                 self.load(self.start.clone());
             }
+            // The view never re-fits by itself (a wheel would jump from
+            // under the pointer); this brings every wheel and the ICR in.
+            if ui
+                .button("Fit all")
+                .on_hover_text("Zoom so that every wheel and the ICR are on the canvas")
+                .clicked()
+            {
+                self.extent = super::extent_for(&self.chassis, &self.task);
+            }
             ui.separator();
             ui.label("Add");
             for (label, kind) in [
@@ -85,8 +94,16 @@ impl Workbench {
                     self.add_wheel(kind);
                 }
             }
+            // Always there (greyed out until a wheel is selected), so
+            // selecting a wheel never re-wraps the toolbar and moves the canvas.
+            let remove = ui
+                .add_enabled(
+                    self.selected.is_some(),
+                    egui::Button::new("Remove selected").small(),
+                )
+                .on_disabled_hover_text("Click a wheel first");
             if let Some(i) = self.selected
-                && ui.small_button("Remove selected").clicked()
+                && remove.clicked()
             {
                 let mut wheels = self.chassis.wheels().to_vec();
                 wheels.remove(i);
@@ -165,35 +182,37 @@ impl Workbench {
             return;
         }
         let mono = |s: String| RichText::new(s).monospace();
-        egui::Grid::new(ui.scope_id().with("rows"))
-            .num_columns(4)
-            .striped(true)
-            .spacing(vec2(12.0, 2.0))
-            .show(ui, |ui| {
-                ui.label(RichText::new("wheel").strong());
-                ui.label(RichText::new("rolling row J1 (= r × spin)").strong());
-                ui.label(RichText::new("r").strong());
-                ui.label(RichText::new("sliding row C1 (= 0)").strong());
-                ui.end_row();
-                for &i in &rows_for {
-                    let w = &self.chassis.wheels()[i];
-                    let rows = w.rows();
-                    let color = wheel_color(i);
-                    let mut label =
-                        RichText::new(format!("{} {}", i + 1, w.kind.name())).color(color);
-                    if self.selected == Some(i) {
-                        label = label.strong().background_color(color.gamma_multiply(0.15));
-                    }
-                    ui.label(label);
-                    let v = |r: kinolab_wheels::Vector3<f64>| {
-                        format!("[{} {} {}]", signed(r.x, 3), signed(r.y, 3), signed(r.z, 3))
-                    };
-                    ui.label(mono(v(rows.rolling)));
-                    ui.label(mono(fixed(w.radius, 3)));
-                    ui.label(mono(v(rows.sliding)));
+        crate::widget::sideways(ui, |ui| {
+            egui::Grid::new(ui.scope_id().with("rows"))
+                .num_columns(4)
+                .striped(true)
+                .spacing(vec2(12.0, 2.0))
+                .show(ui, |ui| {
+                    ui.label(RichText::new("wheel").strong());
+                    ui.label(RichText::new("rolling row J1 (= r × spin)").strong());
+                    ui.label(RichText::new("r").strong());
+                    ui.label(RichText::new("sliding row C1 (= 0)").strong());
                     ui.end_row();
-                }
-            });
+                    for &i in &rows_for {
+                        let w = &self.chassis.wheels()[i];
+                        let rows = w.rows();
+                        let color = wheel_color(i);
+                        let mut label =
+                            RichText::new(format!("{} {}", i + 1, w.kind.name())).color(color);
+                        if self.selected == Some(i) {
+                            label = label.strong().background_color(color.gamma_multiply(0.15));
+                        }
+                        ui.label(label);
+                        let v = |r: kinolab_wheels::Vector3<f64>| {
+                            format!("[{} {} {}]", signed(r.x, 3), signed(r.y, 3), signed(r.z, 3))
+                        };
+                        ui.label(mono(v(rows.rolling)));
+                        ui.label(mono(fixed(w.radius, 3)));
+                        ui.label(mono(v(rows.sliding)));
+                        ui.end_row();
+                    }
+                });
+        });
     }
 
     pub(super) fn selected_editor(&mut self, ui: &mut egui::Ui) {
