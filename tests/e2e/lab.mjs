@@ -171,6 +171,28 @@ try {
       await small.screenshot({ path: `${out}/phone-${lesson.split("/")[1]}.png` });
     });
   }
+  await check("a finger drags and pinches on the phone without console errors", async () => {
+    // Real touch events (what a finger sends), through the DevTools protocol.
+    const cdp = await phone.newCDPSession(small);
+    const touch = (type, points) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints: points });
+    // One finger drags in the page's margin (which scrolls the lesson),
+    // then two fingers pinch.
+    const before = await small.screenshot();
+    await touch("touchStart", [{ x: 392, y: 600, id: 1 }]);
+    for (let y = 580; y >= 300; y -= 20) {
+      await touch("touchMove", [{ x: 392, y, id: 1 }]);
+      await small.waitForTimeout(16);
+    }
+    await touch("touchEnd", []);
+    await small.waitForTimeout(500);
+    assert.notDeepEqual(await small.screenshot(), before, "a finger drag did not scroll the lesson");
+    await touch("touchStart", [{ x: 180, y: 500, id: 1 }, { x: 230, y: 500, id: 2 }]);
+    for (let d = 60; d <= 140; d += 20) await touch("touchMove", [{ x: 205 - d, y: 500, id: 1 }, { x: 205 + d, y: 500, id: 2 }]);
+    await touch("touchEnd", []);
+    await small.waitForTimeout(300);
+    const [right, screen] = (await small.evaluate(() => document.documentElement.dataset.kinolabExtent)).split(" ").map(Number);
+    assert.ok(right <= screen + 0.5, `after the gestures the content reaches ${right} on a ${screen} wide screen`);
+  });
 
   await check("no console errors, page errors or failed loads", async () => {
     assert.deepEqual(problems, []);

@@ -28,20 +28,14 @@ pub fn grid(painter: &Painter, view: &PlaneView, rect: Rect, step: f64, color: C
     }
 }
 
-/// Two labelled axis arrows from `origin` to `x_tip` and `y_tip`.
+/// Two labelled axis arrows from `origin` to `x_tip` and `y_tip`; the
+/// names are short formulas (`x`, `y_R`), set beyond the arrow heads.
 pub fn axes(painter: &Painter, origin: Pos2, tips: [(Pos2, &str); 2], color: Color32) {
     let stroke = Stroke::new(1.5, color);
-    let font = egui::FontId::proportional(12.0);
     for (tip, name) in tips {
         painter.arrow(origin, tip - origin, stroke);
-        let beyond = tip + (tip - origin).normalized() * 9.0;
-        painter.text(
-            beyond,
-            egui::Align2::CENTER_CENTER,
-            name,
-            font.clone(),
-            color,
-        );
+        let beyond = tip + (tip - origin).normalized() * 11.0;
+        super::labels::paint_formula(painter, beyond, name, 12.0, color);
     }
 }
 

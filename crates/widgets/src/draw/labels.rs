@@ -76,6 +76,32 @@ pub fn formula(ui: &mut egui::Ui, tex: &str) -> egui::Response {
     }
 }
 
+/// A short formula (`x_R`, `\\theta`) painted centred on `at`, set like the
+/// lessons' formulas, for the labels of a drawing; text that does not parse
+/// is painted as it is.
+pub fn paint_formula(painter: &Painter, at: Pos2, tex: &str, size: f32, color: Color32) {
+    use kinolab_formula::layout::{MathMode, MathStyle, layout_math};
+    match kinolab_formula::parse(tex) {
+        Ok(math) => {
+            let style = MathStyle { size, color };
+            let b = painter
+                .ctx()
+                .fonts_mut(|f| layout_math(f, &math, &style, MathMode::Inline));
+            let origin = Pos2::new(at.x - b.width / 2.0, at.y - b.height() / 2.0 + b.ascent);
+            b.paint(painter, origin, color);
+        }
+        Err(_) => {
+            painter.text(
+                at,
+                Align2::CENTER_CENTER,
+                tex,
+                FontId::proportional(size),
+                color,
+            );
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -284,6 +284,7 @@ impl Drive {
         }
         let dt = f64::from(ui.input(|i| i.stable_dt)).clamp(0.0, 0.05);
         self.pose = integrate(self.pose, twist, dt);
+        self.swing_castors(twist, dt);
         let here = [self.pose[0], self.pose[1]];
         let last = self.trail.back().copied();
         if last.is_none_or(|l| (l[0] - here[0]).hypot(l[1] - here[1]) > 0.01) {
@@ -294,6 +295,33 @@ impl Drive {
         }
         if twist.norm() > 0.0 {
             crate::widget::animate(ui);
+        }
+    }
+
+    /// Castors are not steered by anyone: each swings at the rate that
+    /// keeps it rolling without sliding, so over a turn it trails the
+    /// motion, as the drawing and the "swings" readout both show.
+    fn swing_castors(&mut self, twist: Vector3<f64>, dt: f64) {
+        // A short castor swings fast (about speed / offset): small steps
+        // keep its swing from overshooting.
+        const STEP: f64 = 0.005;
+        let steps = (dt / STEP).ceil().clamp(1.0, 10.0);
+        for _ in 0..steps as usize {
+            let Ok(ik) = self.chassis.inverse(twist) else {
+                return;
+            };
+            let mut wheels = self.chassis.wheels().to_vec();
+            let mut swung = false;
+            for (w, c) in wheels.iter_mut().zip(&ik.wheels) {
+                if matches!(w.kind, WheelKind::Castor { .. }) && c.steer_rate.is_finite() {
+                    w.beta = kinolab_common::angle::wrap(w.beta + c.steer_rate * dt / steps);
+                    swung |= c.steer_rate != 0.0;
+                }
+            }
+            match Chassis::new(self.chassis.name().to_owned(), wheels) {
+                Ok(next) if swung => self.chassis = next,
+                _ => return,
+            }
         }
     }
 
@@ -445,6 +473,52 @@ impl LabWidget for Drive {
                     .collect(),
                 mode: c.mode,
             };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The castor's angle and how fast it still swings, for `twist`.
+    fn castor(d: &Drive, twist: Vector3<f64>) -> (f64, f64) {
+        let i = d
+            .chassis
+            .wheels()
+            .iter()
+            .position(|w| matches!(w.kind, WheelKind::Castor { .. }))
+            .expect("the differential drive has a castor");
+        let ik = d.chassis.inverse(twist).expect("a valid twist");
+        (d.chassis.wheels()[i].beta, ik.wheels[i].steer_rate)
+    }
+
+    #[test]
+    fn a_castor_swings_round_to_trail_the_motion() {
+        let chassis =
+            kinolab_wheels::catalogue::robot("differential-drive").expect("in the catalogue");
+        let mut d = Drive::new(chassis, Mode::Twist);
+        let drive = |d: &mut Drive, twist: Vector3<f64>| {
+            // A nudge off balance, as any real castor has, then 4 s.
+            d.swing_castors(twist + Vector3::new(0.0, 0.0, 0.2), 0.05);
+            for _ in 0..200 {
+                d.swing_castors(twist, 0.02);
+            }
+        };
+        for v in [0.3, -0.3] {
+            let twist = Vector3::new(v, 0.0, 0.0);
+            drive(&mut d, twist);
+            let (trailing, rate) = castor(&d, twist);
+            assert!(rate.abs() < 1e-3, "still swinging at {rate} rad/s");
+            // Reverse: the castor leads now, and swings half a turn round.
+            drive(&mut d, -twist);
+            let (after, rate) = castor(&d, -twist);
+            let turned = kinolab_common::angle::wrap(after - trailing).abs();
+            assert!(
+                (turned - std::f64::consts::PI).abs() < 0.01,
+                "turned {turned} rad"
+            );
+            assert!(rate.abs() < 1e-3, "still swinging at {rate} rad/s");
         }
     }
 }
