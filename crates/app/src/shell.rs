@@ -52,6 +52,10 @@ pub struct KinolabApp {
     /// How far right the page's content reached on the last frame, and the
     /// screen's width, in points: content past the screen is cut off.
     extent: (f32, f32),
+    /// The device has a touch screen: a finger drag scrolls the page from
+    /// the first touch on (egui learns of touch only from touch events,
+    /// which arrive after the first press).
+    touch_screen: bool,
 }
 
 impl std::fmt::Debug for KinolabApp {
@@ -84,9 +88,16 @@ impl KinolabApp {
             style_ready: false,
             frames_drawn: 0,
             extent: (0.0, 0.0),
+            touch_screen: false,
         };
         app.follow_hash(hash);
         app
+    }
+
+    /// Tell the lab it runs on a touch screen (the browser knows before
+    /// the first touch).
+    pub fn set_touch_screen(&mut self, on: bool) {
+        self.touch_screen = on;
     }
 
     pub fn page(&self) -> &Page {
@@ -388,6 +399,13 @@ impl KinolabApp {
 
     fn main_area(&mut self, ui: &mut egui::Ui) {
         let mut scroll = ScrollArea::vertical().auto_shrink([false, false]);
+        if self.touch_screen {
+            use egui::containers::scroll_area::{DragScroll, ScrollSource};
+            scroll = scroll.scroll_source(ScrollSource {
+                drag: DragScroll::Always,
+                ..ScrollSource::default()
+            });
+        }
         if std::mem::take(&mut self.scroll_to_top) {
             scroll = scroll.vertical_scroll_offset(0.0);
         }

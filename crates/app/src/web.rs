@@ -24,6 +24,11 @@ fn window() -> Option<web_sys::Window> {
     web_sys::window()
 }
 
+/// Whether the device has a touch screen (a phone, a tablet).
+pub fn touch_screen() -> bool {
+    window().is_some_and(|w| w.navigator().max_touch_points() > 0)
+}
+
 /// The browser's current hash, read fresh (not eframe's copy, which lags
 /// one event behind our own changes).
 pub fn current_hash() -> String {

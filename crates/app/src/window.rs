@@ -45,11 +45,17 @@ fn save(file: &kinolab_widgets::export::SaveRequest) {
 /// Set up the app for eframe: stored progress, the page the address names.
 pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
     #[cfg(target_arch = "wasm32")]
-    let stored = {
-        let _ = cc; // the browser's own storage is read directly
-        crate::web::load_progress()
-    };
+    let (stored, touch) = (crate::web::load_progress(), crate::web::touch_screen());
     #[cfg(not(target_arch = "wasm32"))]
-    let stored = cc.storage.and_then(|s| s.get_string(progress::STORAGE_KEY));
-    KinolabApp::new(stored.as_deref(), hash)
+    let (stored, touch) = (
+        cc.storage.and_then(|s| s.get_string(progress::STORAGE_KEY)),
+        false,
+    );
+    let mut app = KinolabApp::new(stored.as_deref(), hash);
+    if touch {
+        // A finger drag over text scrolls from the very first touch.
+        kinolab_widgets::theme::touch_first(&cc.egui_ctx);
+        app.set_touch_screen(true);
+    }
+    app
 }

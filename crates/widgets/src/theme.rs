@@ -62,6 +62,13 @@ pub fn install(ctx: &egui::Context) {
     outline_controls(ctx);
 }
 
+/// Set up for fingers: labels are not selectable, so a drag that starts on
+/// text scrolls the page (egui does this itself, but only once it has seen
+/// a touch event, which comes after the first press).
+pub fn touch_first(ctx: &egui::Context) {
+    ctx.all_styles_mut(|style| style.interaction.selectable_labels = false);
+}
+
 /// WCAG's minimum contrast for the parts of a control a learner must see
 /// (1.4.11, non-text contrast).
 pub const CONTROL_CONTRAST: f32 = 3.0;

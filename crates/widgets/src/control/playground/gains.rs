@@ -44,8 +44,9 @@ impl Playground {
             slider(ui, &mut g[0], -2.0..=10.0, "k_ρ", 1);
             slider(ui, &mut g[1], -5.0..=20.0, "k_α", 1);
             slider(ui, &mut g[2], -10.0..=5.0, "k_β", 1);
-            egui::ComboBox::from_id_salt(ui.scope_id().with("direction"))
-                .selected_text(format!("drive: {}", direction_name(self.set.direction)))
+            // Labelled, so a screen reader names it too.
+            egui::ComboBox::new(ui.scope_id().with("direction"), "driving direction")
+                .selected_text(direction_name(self.set.direction))
                 .show_ui(ui, |ui| {
                     for d in [Direction::Auto, Direction::Forward, Direction::Backward] {
                         ui.selectable_value(&mut self.set.direction, d, direction_name(d));

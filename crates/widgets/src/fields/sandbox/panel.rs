@@ -41,9 +41,10 @@ impl Sandbox {
         }
         let current = PRESETS.iter().find(|p| p.id == self.design.preset);
         let mut chosen = None;
-        egui::ComboBox::from_id_salt(ui.scope_id().with("preset"))
+        // Labelled, so a screen reader names it too.
+        egui::ComboBox::new(ui.scope_id().with("preset"), "field")
             .selected_text(current.map_or("Choose a field", |p| p.title))
-            .width(230.0)
+            .width(230.0_f32.min(ui.available_width() - 60.0))
             .show_ui(ui, |ui| {
                 for p in &PRESETS {
                     if ui
