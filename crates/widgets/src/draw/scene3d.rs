@@ -218,11 +218,7 @@ pub fn draw_capsule(
 pub fn draw_grid(painter: &egui::Painter, camera: &Camera, rect: Rect, colour: Color32) {
     let stroke = Stroke::new(1.0, colour);
     let step = nice_step(camera.extent / camera.zoom as f64);
-    let n = 12;
-    let c = [
-        (camera.centre[0] / step).round() * step,
-        (camera.centre[1] / step).round() * step,
-    ];
+    let (c, n) = grid_centre(camera, rect, step);
     let line = |a: Vector3<f64>, b: Vector3<f64>| {
         let (pa, _) = camera.project(rect, &a);
         let (pb, _) = camera.project(rect, &b);
@@ -252,9 +248,50 @@ pub fn draw_grid(painter: &egui::Painter, camera: &Camera, rect: Rect, colour: C
     }
 }
 
+/// Where the floor grid is centred (on the world point under the middle
+/// of the view, so a panned view still shows grid) and how many lines it
+/// draws each way.
+fn grid_centre(camera: &Camera, rect: Rect, step: f64) -> ([f64; 2], i32) {
+    let scale = f64::from(camera.scale(rect)).max(1e-6);
+    let pan = [
+        f64::from(camera.pan.x) / scale,
+        f64::from(camera.pan.y) / scale,
+    ];
+    let (x, y, extra) = match camera.kind {
+        ViewKind::Plan => (camera.centre[0] - pan[0], camera.centre[1] + pan[1], 0.0),
+        ViewKind::Side => (camera.centre[0] - pan[0], camera.centre[1], 0.0),
+        // Orbiting, the ground under the middle is harder to find: widen
+        // the grid by how far the view was panned.
+        ViewKind::Orbit => (
+            camera.centre[0],
+            camera.centre[1],
+            pan[0].hypot(pan[1]) / step,
+        ),
+    };
+    let n = (12.0 + extra.ceil()).min(60.0) as i32;
+    ([(x / step).round() * step, (y / step).round() * step], n)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_panned_plan_view_keeps_its_grid_under_the_middle() {
+        let rect = Rect::from_min_size(pos2(0.0, 0.0), vec2(600.0, 400.0));
+        let mut camera = Camera::new(ViewKind::Plan, [0.0, 0.0, 0.0], 1.0);
+        camera.pan = vec2(-900.0, 300.0);
+        let step = nice_step(camera.extent);
+        let (c, n) = grid_centre(&camera, rect, step);
+        // The grid's centre lands within a step of the middle of the view.
+        let (at, _) = camera.project(rect, &Vector3::new(c[0], c[1], 0.0));
+        let scale = camera.scale(rect);
+        assert!(
+            (at - rect.center()).length() <= step as f32 * scale,
+            "{at:?}"
+        );
+        assert_eq!(n, 12);
+    }
 
     #[test]
     fn plan_and_side_views_put_axes_where_a_reader_expects() {
