@@ -11,6 +11,7 @@ use kinolab_world::{Vec2, World};
 use serde::{Deserialize, Serialize};
 
 use crate::behaviour::world_view::draw_world;
+use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, handle};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
@@ -181,15 +182,13 @@ fn draw_search(
     }
 }
 
-fn marker(painter: &Painter, at: Pos2, color: Color32, text: &str) {
+fn marker(painter: &Painter, labels: &mut Labels, at: Pos2, color: Color32, text: &str) {
     painter.circle(at, 9.0, color, Stroke::new(1.5, Color32::WHITE));
-    painter.text(
-        at + vec2(0.0, -16.0),
-        egui::Align2::CENTER_BOTTOM,
-        text,
-        egui::FontId::proportional(12.0),
-        color,
-    );
+    labels.reserve(egui::Rect::from_center_size(at, vec2(20.0, 20.0)));
+    labels
+        .add(at, text, color)
+        .toward(vec2(0.0, -1.0))
+        .beyond(6.0);
 }
 
 /// The counts, in words.
@@ -251,18 +250,12 @@ impl LabWidget for GridPlanner {
                 self.shown = None;
             }
         }
-        marker(
-            &painter,
-            view.to_screen(self.setup.start),
-            theme::accent(ui),
-            "start",
-        );
-        marker(
-            &painter,
-            view.to_screen(self.setup.goal),
-            theme::good_color(ui),
-            "goal",
-        );
+        let mut labels = Labels::default();
+        let start = view.to_screen(self.setup.start);
+        marker(&painter, &mut labels, start, theme::accent(ui), "start");
+        let goal = view.to_screen(self.setup.goal);
+        marker(&painter, &mut labels, goal, theme::good_color(ui), "goal");
+        labels.draw(&painter, &egui::FontId::proportional(12.0));
         if let Some(shown) = &mut self.shown {
             *shown += CELLS_PER_SECOND * f64::from(ui.input(|i| i.stable_dt).min(0.1));
             crate::widget::animate(ui);

@@ -4,6 +4,7 @@
 use egui::{Color32, Painter, Pos2, Rect, Stroke, vec2};
 use kinolab_control::{Pose, Sample};
 
+use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, grid};
 
 /// Length of a pose's heading arrow, m.
@@ -38,6 +39,7 @@ pub(super) fn floor(painter: &Painter, view: &PlaneView, rect: Rect, ink: Color3
 /// A pose as a dot with a heading arrow and a round handle to turn it.
 pub(super) fn pose(
     painter: &Painter,
+    labels: &mut Labels,
     view: &PlaneView,
     p: &Pose,
     color: Color32,
@@ -51,13 +53,11 @@ pub(super) fn pose(
     if handles {
         painter.circle_stroke(tip, 6.0, Stroke::new(1.5, color));
     }
-    painter.text(
-        at + vec2(8.0, 8.0),
-        egui::Align2::LEFT_TOP,
-        label,
-        egui::FontId::proportional(13.0),
-        color,
-    );
+    labels.avoid_line(at, tip);
+    labels.reserve(egui::Rect::from_center_size(at, vec2(10.0, 10.0)));
+    if !label.is_empty() {
+        labels.add(at, label, color).toward(at - tip);
+    }
 }
 
 /// A path through the samples' positions.

@@ -9,6 +9,7 @@ use kinolab_design::ant::{self, Beach, DEFAULT_PEBBLES, Walk};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::PlaneView;
+use crate::draw::labels::Labels;
 use crate::widget::{LabWidget, Params, feedback_ui, number};
 use crate::{link, theme};
 
@@ -109,15 +110,14 @@ impl AntBeach {
                 );
             }
         }
+        let mut labels = Labels::default();
         for (p, label) in [(ant::START, "start"), (ant::GOAL, "goal")] {
-            painter.text(
-                view.to_screen(p),
-                egui::Align2::CENTER_BOTTOM,
-                label,
-                egui::FontId::proportional(11.0),
-                ui.visuals().text_color(),
-            );
+            let at = view.to_screen(p);
+            labels
+                .add(at, label, ui.visuals().text_color())
+                .toward(vec2(0.0, -1.0));
         }
+        labels.draw(&painter, &egui::FontId::proportional(11.0));
     }
 
     fn plot(&self, ui: &mut egui::Ui) {

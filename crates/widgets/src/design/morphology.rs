@@ -5,11 +5,12 @@
 //! them through the ports; switch the plugged-in closed forms off and the
 //! generic tree walk answers instead.
 
-use egui::{Align2, Color32, FontId, RichText, Sense, Stroke, pos2, vec2};
+use egui::{Color32, FontId, RichText, Sense, Stroke, pos2, vec2};
 use kinolab_common::display::fixed;
 use kinolab_design::morphology::{between, chain};
 use kinolab_mechanism::{Model, Pose};
 
+use crate::draw::labels::Labels;
 use crate::theme;
 use crate::widget::{LabWidget, Params};
 
@@ -101,6 +102,10 @@ impl Morphology {
             }
         }
         let chosen = [self.from, self.to];
+        let mut labels = Labels::default();
+        for b in 0..n {
+            labels.reserve(egui::Rect::from_center_size(at(b), vec2(10.0, 10.0)));
+        }
         for b in 0..n {
             let colour = if chosen.contains(&b) {
                 theme::accent(ui)
@@ -111,15 +116,11 @@ impl Morphology {
             };
             painter.circle_filled(at(b), 5.0, colour);
             if n <= 14 || chosen.contains(&b) {
-                painter.text(
-                    at(b) + vec2(7.0, 0.0),
-                    Align2::LEFT_CENTER,
-                    &model.bodies()[b].name,
-                    FontId::proportional(10.5),
-                    ink,
-                );
+                let name = model.bodies()[b].name.as_str();
+                labels.add(at(b), name, ink).toward(vec2(1.0, 0.0));
             }
         }
+        labels.draw(&painter, &FontId::proportional(10.5));
         for f in model.frames() {
             let p = at(f.body) + vec2(0.0, 9.0);
             painter.rect_filled(

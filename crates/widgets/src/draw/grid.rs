@@ -2,6 +2,7 @@
 
 use egui::{Color32, Painter, Pos2, Rect, Stroke};
 
+use super::labels::Labels;
 use super::view::PlaneView;
 
 /// Lines every `step` metres across the part of the world `rect` shows.
@@ -29,13 +30,20 @@ pub fn grid(painter: &Painter, view: &PlaneView, rect: Rect, step: f64, color: C
 }
 
 /// Two labelled axis arrows from `origin` to `x_tip` and `y_tip`; the
-/// names are short formulas (`x`, `y_R`), set beyond the arrow heads.
-pub fn axes(painter: &Painter, origin: Pos2, tips: [(Pos2, &str); 2], color: Color32) {
+/// names are short formulas (`x`, `y_R`), placed beyond the arrow heads
+/// when that is free, and the arrows are kept clear of other labels.
+pub fn axes(
+    painter: &Painter,
+    labels: &mut Labels,
+    origin: Pos2,
+    tips: [(Pos2, &str); 2],
+    color: Color32,
+) {
     let stroke = Stroke::new(1.5, color);
     for (tip, name) in tips {
         painter.arrow(origin, tip - origin, stroke);
-        let beyond = tip + (tip - origin).normalized() * 11.0;
-        super::labels::paint_formula(painter, beyond, name, 12.0, color);
+        labels.avoid_line(origin, tip);
+        labels.add_formula(tip, name, color).toward(tip - origin);
     }
 }
 

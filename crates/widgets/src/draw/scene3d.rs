@@ -177,7 +177,8 @@ pub const AXIS_COLOURS: [Color32; 3] = [
     Color32::from_rgb(60, 110, 230),
 ];
 
-/// Draw a frame's three axes, `length` metres long.
+/// Draw a frame's three axes, `length` metres long; returns them on
+/// screen, for labels to keep clear of.
 pub fn draw_frame(
     painter: &egui::Painter,
     camera: &Camera,
@@ -186,14 +187,17 @@ pub fn draw_frame(
     length: f64,
     alpha: f32,
     width: f32,
-) {
+) -> [[Pos2; 2]; 3] {
     let (o, _) = camera.project(rect, &pose.translation.vector);
+    let mut segments = [[o, o]; 3];
     for (k, colour) in AXIS_COLOURS.iter().enumerate() {
         let mut axis = Vector3::zeros();
         axis[k] = length;
         let (tip, _) = camera.project(rect, &(pose.rotation * axis + pose.translation.vector));
         painter.line_segment([o, tip], Stroke::new(width, colour.gamma_multiply(alpha)));
+        segments[k] = [o, tip];
     }
+    segments
 }
 
 /// Draw a capsule (two ends, m; radius, m) as a thick rounded stroke.

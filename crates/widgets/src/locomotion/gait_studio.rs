@@ -4,13 +4,15 @@
 //! the cycle; change the duty factor, the stride, the centre of mass and
 //! each leg's lift-off phase.
 
-use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, RichText, Sense, Shape, Stroke, vec2};
+use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, RichText, Sense, Stroke, vec2};
 use kinolab_common::display::fixed;
 use kinolab_locomotion::gait::{Instant, min_margin};
 use kinolab_locomotion::{Gait, named, named_ids, static_stability};
 use serde::{Deserialize, Serialize};
 
+use super::{draw_foot, draw_support};
 use crate::draw::PlaneView;
+use crate::draw::labels::Labels;
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -179,25 +181,9 @@ fn top_view(ui: &egui::Ui, painter: &Painter, rect: Rect, gait: &Gait, now: &Ins
         Some(m) if m > 0.0 => theme::good_color(ui),
         _ => theme::warn_color(ui),
     };
+    let mut labels = Labels::default();
     if let Some(s) = &stability {
-        let corners: Vec<Pos2> = s.polygon.iter().map(|&p| view.to_screen(p)).collect();
-        match corners.len() {
-            n if n >= 3 => {
-                painter.add(Shape::convex_polygon(
-                    corners,
-                    color.gamma_multiply(0.18),
-                    Stroke::new(2.0, color),
-                ));
-            }
-            2 => {
-                painter.line_segment([corners[0], corners[1]], Stroke::new(2.0, color));
-            }
-            _ => {}
-        }
-        painter.line_segment(
-            [view.to_screen(gait.com), view.to_screen(s.nearest)],
-            Stroke::new(1.5, color),
-        );
+        draw_support(painter, &mut labels, &view, s, gait.com, color);
     }
     let body = Rect::from_center_size(
         view.to_screen([0.0, 0.0]),
@@ -215,17 +201,14 @@ fn top_view(ui: &egui::Ui, painter: &Painter, rect: Rect, gait: &Gait, now: &Ins
             Some(k) => view.to_screen(now.feet[k]),
             None => view.to_screen([leg.x, leg.y]),
         };
-        if standing.is_some() {
-            painter.circle(at, 8.0, ink.gamma_multiply(0.8), Stroke::new(2.0, ink));
-        } else {
-            painter.circle_stroke(at, 8.0, Stroke::new(1.5, ink.gamma_multiply(0.45)));
-        }
-        let out = vec2(leg.x as f32, -leg.y as f32).normalized();
-        painter.text(
-            at + out * 20.0,
-            Align2::CENTER_CENTER,
+        let out = vec2(leg.x as f32, -leg.y as f32);
+        draw_foot(
+            painter,
+            &mut labels,
+            at,
+            standing.is_some(),
+            out,
             &leg.name,
-            FontId::proportional(12.0),
             ink,
         );
     }
@@ -236,6 +219,8 @@ fn top_view(ui: &egui::Ui, painter: &Painter, rect: Rect, gait: &Gait, now: &Ins
         theme::accent(ui),
         Stroke::new(1.5, Color32::WHITE),
     );
+    labels.reserve(Rect::from_center_size(com, vec2(16.0, 16.0)));
+    labels.draw(painter, &FontId::proportional(12.0));
     painter.text(
         rect.right_top() + vec2(-8.0, 8.0),
         Align2::RIGHT_TOP,

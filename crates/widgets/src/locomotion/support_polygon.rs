@@ -1,11 +1,13 @@
 //! Static stability, hands on: drag the feet and the centre of mass of a
 //! walker seen from above; click a foot to lift or lower it.
 
-use egui::{Color32, Painter, Pos2, RichText, Sense, Shape, Stroke, vec2};
+use egui::{Color32, Painter, Pos2, Rect, RichText, Sense, Stroke, vec2};
 use kinolab_common::display::fixed;
 use kinolab_locomotion::{Point, Stability, static_stability};
 use serde::{Deserialize, Serialize};
 
+use super::{draw_foot, draw_support};
+use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, handle};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
@@ -121,56 +123,24 @@ impl SupportPolygon {
         verdict: Option<&Stability>,
     ) {
         let ink = ui.visuals().text_color();
+        let mut labels = Labels::default();
         if let Some(s) = verdict {
             let color = verdict_color(ui, s);
-            let corners: Vec<Pos2> = s.polygon.iter().map(|&p| view.to_screen(p)).collect();
-            if corners.len() >= 3 {
-                painter.add(Shape::convex_polygon(
-                    corners,
-                    color.gamma_multiply(0.18),
-                    Stroke::new(2.0, color),
-                ));
-            } else if corners.len() == 2 {
-                painter.line_segment([corners[0], corners[1]], Stroke::new(2.0, color));
-            }
-            painter.line_segment(
-                [view.to_screen(self.stance.com), view.to_screen(s.nearest)],
-                Stroke::new(1.5, color),
-            );
+            draw_support(painter, &mut labels, view, s, self.stance.com, color);
         }
-        // Body outline, for orientation: the front is to the right.
-        let body = egui::Rect::from_center_size(
-            view.to_screen([0.0, 0.0]),
-            vec2(view.length(0.36), view.length(0.2)),
-        );
-        painter.rect_stroke(
-            body,
-            8.0,
-            Stroke::new(1.0, ink.gamma_multiply(0.4)),
-            egui::StrokeKind::Middle,
-        );
-        self.draw_feet(painter, view, ink);
-        draw_com(painter, view.to_screen(self.stance.com), theme::accent(ui));
+        let com = view.to_screen(self.stance.com);
+        labels.reserve(Rect::from_center_size(com, vec2(20.0, 20.0)));
+        self.draw_feet(painter, &mut labels, view, ink);
+        draw_com(painter, com, theme::accent(ui));
+        labels.draw(painter, &egui::FontId::proportional(12.0));
     }
 
-    fn draw_feet(&self, painter: &Painter, view: &PlaneView, ink: Color32) {
+    fn draw_feet(&self, painter: &Painter, labels: &mut Labels, view: &PlaneView, ink: Color32) {
         for (i, foot) in self.stance.feet.iter().enumerate() {
+            let out = egui::Vec2::new(foot.at[0] as f32, -foot.at[1] as f32);
             let at = view.to_screen(foot.at);
-            if foot.on_ground {
-                painter.circle(at, 9.0, ink.gamma_multiply(0.8), Stroke::new(2.0, ink));
-            } else {
-                painter.circle_stroke(at, 9.0, Stroke::new(2.0, ink.gamma_multiply(0.5)));
-                painter.circle_stroke(at, 13.0, Stroke::new(1.0, ink.gamma_multiply(0.3)));
-            }
-            // The number sits outward from the body, clear of the polygon's edges.
-            let out = egui::Vec2::new(foot.at[0] as f32, -foot.at[1] as f32).normalized();
-            painter.text(
-                at + out * 20.0,
-                egui::Align2::CENTER_CENTER,
-                (i + 1).to_string(),
-                egui::FontId::proportional(12.0),
-                ink,
-            );
+            let name = (i + 1).to_string();
+            draw_foot(painter, labels, at, foot.on_ground, out, &name, ink);
         }
     }
 }

@@ -11,6 +11,7 @@ use kinolab_locomotion::balance::{CartTable, Recovery};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::PlaneView;
+use crate::draw::labels::Labels;
 use crate::draw::plot::{REFERENCE, series_legend, series_lines};
 use crate::widget::{LabWidget, Params, feedback_ui};
 use crate::{link, theme};
@@ -127,27 +128,29 @@ impl ZmpCartTable {
             theme::accent(ui)
         };
         painter.circle(body, 14.0, colour, Stroke::new(1.5, ink));
-        let mark = |at: f64, colour: Color32, text: &str, row: f32| {
+        // Marks on the ground, their names below it, clear of each other.
+        let mut labels = Labels::default();
+        let mut mark = |at: f64, colour: Color32, text: &str| {
             let p = view.to_screen([at, 0.0]);
             painter.circle_filled(p, 5.0, colour);
-            painter.text(
-                p + vec2(0.0, 10.0 + row * 14.0),
-                egui::Align2::CENTER_TOP,
-                text,
-                egui::FontId::proportional(12.0),
-                colour,
-            );
+            labels.reserve(egui::Rect::from_center_size(p, vec2(10.0, 10.0)));
+            labels
+                .add(p, text, colour)
+                .toward(vec2(0.0, 1.0))
+                .beyond(4.0);
         };
-        mark(zmp, theme::good_color(ui), "ZMP", 0.0);
+        mark(zmp, theme::good_color(ui), "ZMP");
         if s.is_some() {
             let at = wanted.clamp(-0.35, 0.65);
-            mark(at, theme::warn_color(ui), "capture point", 1.0);
+            mark(at, theme::warn_color(ui), "capture point");
         }
         let com_ground: Pos2 = view.to_screen([x, 0.0]);
         painter.line_segment(
             [body, com_ground],
             Stroke::new(1.0, ink.gamma_multiply(0.3)),
         );
+        labels.avoid_line(body, com_ground);
+        labels.draw(&painter, &egui::FontId::proportional(12.0));
     }
 
     fn plot(&self, ui: &mut egui::Ui) {

@@ -115,7 +115,8 @@ impl DhLink {
             Convention::ModifiedDh => NAMES_MODIFIED,
         };
         draw_grid(painter, &self.camera, rect, ink.gamma_multiply(0.08));
-        draw_frame(
+        let mut labels = Labels::default();
+        let base = draw_frame(
             painter,
             &self.camera,
             rect,
@@ -124,7 +125,7 @@ impl DhLink {
             1.0,
             2.5,
         );
-        let mut labels = Labels::default();
+        labels.avoid_lines(&base);
         let origin = self.camera.project(rect, &Vector3::zeros()).0;
         labels.add(origin, "i−1", ink);
         // The path through the intermediate frames.
@@ -138,8 +139,10 @@ impl DhLink {
             let (p0, _) = self.camera.project(rect, &before);
             let (p1, _) = self.camera.project(rect, &at.translation.vector);
             painter.line_segment([p0, p1], Stroke::new(1.5, ink.gamma_multiply(0.5)));
+            labels.avoid_line(p0, p1);
             if k < 3 {
-                draw_frame(painter, &self.camera, rect, &at, 0.12, 0.35, 1.0);
+                let axes = draw_frame(painter, &self.camera, rect, &at, 0.12, 0.35, 1.0);
+                labels.avoid_lines(&axes);
                 labels.add(p1, format!("after {}", names[k]), ink.gamma_multiply(0.5));
             }
         }
@@ -150,7 +153,8 @@ impl DhLink {
             labels.add(at, "target", ink.gamma_multiply(0.7));
         }
         let frame_i = link(self.convention, a, alpha, d, theta);
-        draw_frame(painter, &self.camera, rect, &frame_i, 0.25, 1.0, 3.0);
+        let axes = draw_frame(painter, &self.camera, rect, &frame_i, 0.25, 1.0, 3.0);
+        labels.avoid_lines(&axes);
         labels.add(
             self.camera.project(rect, &frame_i.translation.vector).0,
             "i",

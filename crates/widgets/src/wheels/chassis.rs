@@ -5,6 +5,7 @@ use egui::{Color32, Painter, Pos2, Shape, Stroke, vec2};
 use kinolab_common::display::fixed;
 use kinolab_wheels::{Icr, Wheel, WheelKind};
 
+use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, local, placed};
 
 /// A plane view with the robot placed in it: robot-frame points go through
@@ -123,27 +124,27 @@ pub(crate) fn draw_wheel(
 /// A long thin line through a standard wheel along its axle.
 pub(crate) fn draw_zero_motion_line(
     painter: &Painter,
+    labels: &mut Labels,
     view: &RobotView,
     w: &Wheel,
     color: Color32,
     reach: f64,
 ) {
     let (p, n) = w.zero_motion_line();
-    painter.line_segment(
-        [view.robot(add(p, n, -reach)), view.robot(add(p, n, reach))],
-        Stroke::new(1.0, color.gamma_multiply(0.6)),
-    );
+    let ends = [view.robot(add(p, n, -reach)), view.robot(add(p, n, reach))];
+    painter.line_segment(ends, Stroke::new(1.0, color.gamma_multiply(0.6)));
+    labels.avoid_line(ends[0], ends[1]);
 }
 
 /// Mark the ICR: a ring at a point, a bold line for a line, an arrow for a
 /// translation. Points off the drawing get an arrow at the edge.
 pub(crate) fn draw_icr(
     painter: &Painter,
+    labels: &mut Labels,
     view: &RobotView,
     icr: &Icr,
     color: Color32,
     clip: egui::Rect,
-    wheels: &[egui::Rect],
 ) {
     let stroke = Stroke::new(2.5, color);
     match *icr {
@@ -153,38 +154,25 @@ pub(crate) fn draw_icr(
                 painter.circle_stroke(at, 7.0, stroke);
                 painter.line_segment([at - vec2(10.0, 0.0), at + vec2(10.0, 0.0)], stroke);
                 painter.line_segment([at - vec2(0.0, 10.0), at + vec2(0.0, 10.0)], stroke);
-                // The label goes beside the mark, clear of the wheels.
-                let galley = painter.layout_no_wrap(
-                    "ICR".to_owned(),
-                    egui::FontId::proportional(12.0),
-                    color,
-                );
-                let mut taken = wheels.to_vec();
-                taken.push(egui::Rect::from_center_size(at, vec2(20.0, 20.0)));
-                let spot = crate::draw::labels::place(&taken, at, galley.size());
-                painter.galley(spot.shrink(1.0).min, galley, color);
+                labels.reserve(egui::Rect::from_center_size(at, vec2(20.0, 20.0)));
+                labels.add(at, "ICR", color).beyond(6.0);
             } else {
                 let from = view.robot([0.0, 0.0]);
                 let dir = (at - from).normalized();
                 let edge = clamp_ray(clip.shrink(14.0), from, dir);
                 painter.arrow(edge - dir * 26.0, dir * 22.0, stroke);
-                painter.text(
-                    edge - dir * 30.0 + vec2(0.0, -6.0),
-                    egui::Align2::CENTER_BOTTOM,
-                    format!("ICR ({}, {})", fixed(x, 2), fixed(y, 2)),
-                    egui::FontId::proportional(12.0),
-                    color,
-                );
+                labels.avoid_line(edge - dir * 26.0, edge - dir * 4.0);
+                let text = format!("ICR ({}, {})", fixed(x, 2), fixed(y, 2));
+                labels.add(edge - dir * 30.0, text, color).toward(-dir);
             }
         }
         Icr::Line { point, direction } => {
-            painter.line_segment(
-                [
-                    view.robot(add(point, direction, -50.0)),
-                    view.robot(add(point, direction, 50.0)),
-                ],
-                Stroke::new(3.0, color.gamma_multiply(0.7)),
-            );
+            let ends = [
+                view.robot(add(point, direction, -50.0)),
+                view.robot(add(point, direction, 50.0)),
+            ];
+            painter.line_segment(ends, Stroke::new(3.0, color.gamma_multiply(0.7)));
+            labels.avoid_line(ends[0], ends[1]);
         }
         Icr::Infinity { direction } => {
             let from = view.robot([0.0, 0.0]);
@@ -222,10 +210,17 @@ fn clamp_ray(rect: egui::Rect, from: Pos2, dir: egui::Vec2) -> Pos2 {
 }
 
 /// The chassis point P and the robot's x (forward) and y (left) axes.
-pub(crate) fn draw_frame(painter: &Painter, view: &RobotView, color: Color32, length: f64) {
+pub(crate) fn draw_frame(
+    painter: &Painter,
+    labels: &mut Labels,
+    view: &RobotView,
+    color: Color32,
+    length: f64,
+) {
     let p = view.robot([0.0, 0.0]);
     crate::draw::axes(
         painter,
+        labels,
         p,
         [
             (view.robot([length, 0.0]), "x"),
@@ -234,13 +229,7 @@ pub(crate) fn draw_frame(painter: &Painter, view: &RobotView, color: Color32, le
         color,
     );
     painter.circle_filled(p, 3.0, color);
-    painter.text(
-        p + vec2(-6.0, 6.0),
-        egui::Align2::RIGHT_TOP,
-        "P",
-        egui::FontId::proportional(12.0),
-        color,
-    );
+    labels.add(p, "P", color).toward(vec2(-1.0, 1.0));
 }
 
 /// Where the wheels are on screen, for labels to keep clear of.

@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use super::chassis::{
     RobotView, contact_point, draw_frame, draw_icr, draw_wheel, wheel_color, wheel_rects,
 };
+use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, grid, placed, placed_dir};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
@@ -352,7 +353,14 @@ impl Drive {
                 Stroke::new(2.0, theme::accent(ui).gamma_multiply(0.6)),
             ));
         }
-        draw_frame(painter, &view, ink.gamma_multiply(0.5), extent * 0.2);
+        let mut labels = Labels::default();
+        draw_frame(
+            painter,
+            &mut labels,
+            &view,
+            ink.gamma_multiply(0.5),
+            extent * 0.2,
+        );
         for (i, w) in self.chassis.wheels().iter().enumerate() {
             draw_wheel(painter, &view, w, wheel_color(i), false);
             // Velocity of the contact point, drawn in the world, half scale.
@@ -368,15 +376,18 @@ impl Drive {
                 painter.arrow(from, to - from, Stroke::new(2.0, wheel_color(i)));
             }
         }
-        let wheels = wheel_rects(&view, self.chassis.wheels());
+        for r in wheel_rects(&view, self.chassis.wheels()) {
+            labels.reserve(r);
+        }
         draw_icr(
             painter,
+            &mut labels,
             &view,
             &twist_icr(&twist),
             theme::accent(ui),
             rect,
-            &wheels,
         );
+        labels.draw(painter, &egui::FontId::proportional(12.0));
     }
 
     /// The twist, ICR and pose in words, and what each wheel does.

@@ -7,6 +7,7 @@ use kinolab_wheels::{Vector3, rotation};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::axes;
+use crate::draw::labels::Labels;
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -78,8 +79,10 @@ impl FrameRotation {
         let accent = theme::accent(ui);
         let scale = rect.height() * 0.36;
         let origin = rect.left_bottom() + vec2(40.0, -30.0);
+        let mut labels = Labels::default();
         axes(
             painter,
+            &mut labels,
             origin,
             [
                 (origin + vec2(scale * 0.6, 0.0), "x"),
@@ -87,19 +90,19 @@ impl FrameRotation {
             ],
             ink.gamma_multiply(0.6),
         );
-        painter.text(
-            origin + vec2(4.0, 6.0),
-            egui::Align2::LEFT_TOP,
-            "world",
-            egui::FontId::proportional(11.0),
-            ink,
-        );
+        labels.add(origin, "world", ink).toward(vec2(1.0, 1.0));
         let p = rect.center() + vec2(-40.0, 10.0);
         let (s, c) = self.setup.theta_deg.to_radians().sin_cos();
         let x_r = vec2(c as f32, -s as f32) * scale * 0.7;
         let y_r = vec2(-s as f32, -c as f32) * scale * 0.7;
         robot_body(painter, p, x_r, y_r, accent);
-        axes(painter, p, [(p + x_r, "x_R"), (p + y_r, "y_R")], accent);
+        axes(
+            painter,
+            &mut labels,
+            p,
+            [(p + x_r, "x_R"), (p + y_r, "y_R")],
+            accent,
+        );
         let v = vec2(
             self.setup.inertial[0] as f32,
             -self.setup.inertial[1] as f32,
@@ -107,7 +110,9 @@ impl FrameRotation {
             * 0.8;
         if v.length() > 1.0 {
             painter.arrow(p, v, Stroke::new(3.0, theme::good_color(ui)));
+            labels.avoid_line(p, p + v);
         }
+        labels.draw(painter, &egui::FontId::proportional(12.0));
         painter.text(
             rect.right_top() + vec2(-10.0, 10.0),
             egui::Align2::RIGHT_TOP,

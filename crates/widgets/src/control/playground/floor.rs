@@ -8,6 +8,7 @@ use kinolab_control::Pose;
 
 use super::Playground;
 use crate::control::field;
+use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, handle};
 use crate::theme;
 
@@ -98,20 +99,30 @@ impl Playground {
         held
     }
 
-    pub(super) fn draw_goal(&self, ui: &egui::Ui, painter: &Painter, view: &PlaneView) {
+    /// The start and goal poses, named; the goal alone when `start` is off.
+    pub(super) fn draw_ends(
+        &self,
+        ui: &egui::Ui,
+        painter: &Painter,
+        view: &PlaneView,
+        start: bool,
+    ) {
+        let mut labels = Labels::default();
         field::pose(
             painter,
+            &mut labels,
             view,
             &self.set.goal,
             theme::good_color(ui),
             "goal",
             true,
         );
-    }
-
-    pub(super) fn draw_start(&self, ui: &egui::Ui, painter: &Painter, view: &PlaneView) {
-        let ink = ui.visuals().text_color().gamma_multiply(0.7);
-        field::pose(painter, view, &self.set.start, ink, "start", true);
+        if start {
+            let ink = ui.visuals().text_color().gamma_multiply(0.7);
+            let p = &self.set.start;
+            field::pose(painter, &mut labels, view, p, ink, "start", true);
+        }
+        labels.draw(painter, &egui::FontId::proportional(13.0));
     }
 }
 

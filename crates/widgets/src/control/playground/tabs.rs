@@ -8,6 +8,7 @@ use kinolab_control::{Pose, Sample, Trajectory};
 use super::Playground;
 use super::floor::Grabs;
 use crate::control::field;
+use crate::draw::labels::Labels;
 use crate::theme;
 
 impl Playground {
@@ -15,8 +16,7 @@ impl Playground {
         let width = ui.available_width().min(900.0);
         let keep = [self.set.start, self.set.goal];
         let (painter, view) = self.floor(ui, vec2(width, 320.0), Grabs::StartAndGoal, &keep);
-        self.draw_goal(ui, &painter, &view);
-        self.draw_start(ui, &painter, &view);
+        self.draw_ends(ui, &painter, &view, true);
         let t = match self.run.clone() {
             Some(Ok(t)) => t,
             Some(Err(e)) => {
@@ -116,17 +116,12 @@ impl Playground {
                 Stroke::new(1.3, color.gamma_multiply(0.8)),
             );
             if let Some(s) = t.samples.first() {
-                field::pose(
-                    &painter,
-                    &view,
-                    &s.pose,
-                    color.gamma_multiply(0.6),
-                    "",
-                    false,
-                );
+                let mut marks = Labels::default();
+                let faint = color.gamma_multiply(0.6);
+                field::pose(&painter, &mut marks, &view, &s.pose, faint, "", false);
             }
         }
-        self.draw_goal(ui, &painter, &view);
+        self.draw_ends(ui, &painter, &view, false);
         let reached = runs.iter().filter(|t| t.reached).count();
         let slowest = runs
             .iter()
@@ -200,8 +195,20 @@ impl Playground {
             nominal,
             Stroke::new(1.5, ui.visuals().text_color().gamma_multiply(0.3)),
         );
-        field::pose(&painter, &view, end, theme::good_color(ui), "goal", false);
-        self.draw_start(ui, &painter, &view);
+        let mut labels = Labels::default();
+        let good = theme::good_color(ui);
+        field::pose(&painter, &mut labels, &view, end, good, "goal", false);
+        let ink = ui.visuals().text_color().gamma_multiply(0.7);
+        field::pose(
+            &painter,
+            &mut labels,
+            &view,
+            &self.set.start,
+            ink,
+            "start",
+            true,
+        );
+        labels.draw(&painter, &egui::FontId::proportional(13.0));
         field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
         if let Some(s) = field::at_time(&t.samples, self.cursor) {
             field::robot(&painter, &view, &s.pose, accent);

@@ -11,6 +11,7 @@ use kinolab_fields::{Field, Vec2};
 
 use super::Sandbox;
 use super::piece::Kind;
+use crate::draw::labels::Labels;
 use crate::draw::marks::{arrow, cross, dashed_circle, star};
 use crate::draw::{PlaneView, handle};
 use crate::theme;
@@ -97,13 +98,10 @@ impl Sandbox {
         if let Some(at) = self.task.as_ref().and_then(super::exercise::Task::point) {
             let p = view.to_screen(at);
             cross(&painter, p, 5.0, Stroke::new(2.0, ink.text));
-            painter.text(
-                p + vec2(8.0, -8.0),
-                egui::Align2::LEFT_BOTTOM,
-                "P",
-                egui::FontId::proportional(15.0),
-                ink.text,
-            );
+            let mut labels = Labels::default();
+            labels.reserve(egui::Rect::from_center_size(p, vec2(12.0, 12.0)));
+            labels.add(p, "P", ink.text);
+            labels.draw(&painter, &egui::FontId::proportional(15.0));
         }
         let held = self.handles(ui, &view);
         if let (Some(field), Some(at), false) =

@@ -8,6 +8,7 @@ use kinolab_wheels::challenge::Goal;
 use kinolab_wheels::{Analysis, Wheel, WheelKind};
 
 use super::{ANGLE_STEP, GRID, Task, Workbench};
+use crate::draw::labels::Labels;
 use crate::draw::{grid, handle};
 use crate::theme;
 use crate::wheels::chassis::{
@@ -21,20 +22,33 @@ impl Workbench {
         painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let view = RobotView::robot_frame(rect, self.extent);
         let painter = painter.with_clip_rect(rect);
-        self.draw_scene(ui, &painter, &view, analysis);
-        let clicked = self.wheel_handles(ui, &painter, &view);
-        self.select(clicked, response.clicked());
-        painter.text(
+        let mut labels = Labels::default();
+        let hint = painter.text(
             rect.left_bottom() + vec2(8.0, -6.0),
             egui::Align2::LEFT_BOTTOM,
             "drag a wheel to move it; select it and drag the blue knob to turn it",
             egui::FontId::proportional(11.0),
             ui.visuals().weak_text_color(),
         );
+        labels.reserve(hint);
+        for r in wheel_rects(&view, self.chassis.wheels()) {
+            labels.reserve(r);
+        }
+        self.draw_scene(ui, &painter, &mut labels, &view, analysis);
+        let clicked = self.wheel_handles(ui, &painter, &mut labels, &view);
+        self.select(clicked, response.clicked());
+        labels.draw(&painter, &egui::FontId::proportional(12.0));
     }
 
     /// Everything under the wheels: grid, frame, zero-motion lines, ICR, goal.
-    fn draw_scene(&self, ui: &egui::Ui, painter: &Painter, view: &RobotView, analysis: &Analysis) {
+    fn draw_scene(
+        &self,
+        ui: &egui::Ui,
+        painter: &Painter,
+        labels: &mut Labels,
+        view: &RobotView,
+        analysis: &Analysis,
+    ) {
         let ink = ui.visuals().text_color();
         grid(
             painter,
@@ -43,31 +57,36 @@ impl Workbench {
             0.1,
             ink.gamma_multiply(0.06),
         );
-        draw_frame(painter, view, ink.gamma_multiply(0.5), self.extent * 0.25);
+        draw_frame(
+            painter,
+            labels,
+            view,
+            ink.gamma_multiply(0.5),
+            self.extent * 0.25,
+        );
         for (i, w) in self.chassis.wheels().iter().enumerate() {
             if w.kind.constrains_chassis() {
-                draw_zero_motion_line(painter, view, w, wheel_color(i), self.extent * 4.0);
+                let reach = self.extent * 4.0;
+                draw_zero_motion_line(painter, labels, view, w, wheel_color(i), reach);
             }
         }
         draw_icr(
             painter,
+            labels,
             view,
             &analysis.icr,
             theme::accent(ui),
             painter.clip_rect(),
-            &wheel_rects(view, self.chassis.wheels()),
         );
         if let Task::Goal(Goal::IcrAt { x, y, .. }) = self.task {
             let at = view.robot([x, y]);
             let good = theme::good_color(ui);
             painter.circle_stroke(at, 12.0, Stroke::new(1.5, good));
-            painter.text(
-                at + vec2(14.0, 0.0),
-                egui::Align2::LEFT_CENTER,
-                "goal",
-                egui::FontId::proportional(12.0),
-                good,
-            );
+            labels.reserve(egui::Rect::from_center_size(at, vec2(26.0, 26.0)));
+            labels
+                .add(at, "goal", good)
+                .toward(vec2(1.0, 0.0))
+                .beyond(12.0);
         }
     }
 
@@ -76,6 +95,7 @@ impl Workbench {
         &mut self,
         ui: &mut egui::Ui,
         painter: &Painter,
+        labels: &mut Labels,
         view: &RobotView,
     ) -> Option<usize> {
         let chosen: Vec<usize> = match &self.task {
@@ -89,14 +109,12 @@ impl Workbench {
             let selected = self.selected == Some(i);
             draw_wheel(painter, view, &w, wheel_color(i), selected);
             let at = view.robot(w.position());
-            let label_at = at + vec2(0.0, -14.0 - w.radius as f32 * view.scale() * 0.4);
-            painter.text(
-                label_at,
-                egui::Align2::CENTER_BOTTOM,
-                (i + 1).to_string(),
-                egui::FontId::proportional(13.0),
-                ui.visuals().text_color(),
-            );
+            // The number goes above the wheel when that is free.
+            let label_at = at + vec2(0.0, -8.0 - w.radius as f32 * view.scale() * 0.4);
+            let ink = ui.visuals().text_color();
+            labels
+                .add(label_at, (i + 1).to_string(), ink)
+                .toward(vec2(0.0, -1.0));
             if chosen.contains(&i) {
                 painter.circle_stroke(at, 16.0, Stroke::new(2.5, theme::warn_color(ui)));
             }
