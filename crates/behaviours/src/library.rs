@@ -5,6 +5,7 @@
 
 use kinolab_common::angle::wrap;
 use kinolab_common::random::unit_hash;
+use kinolab_common::trig;
 use kinolab_world::sensors::Percepts;
 use serde::{Deserialize, Serialize};
 
@@ -221,7 +222,7 @@ impl Named {
                 if g.distance <= AT_GOAL {
                     return Some(Response::Twist { v: 0.0, omega: 0.0 });
                 }
-                let v = speed.min(g.distance) * g.bearing.cos().max(0.0);
+                let v = speed.min(g.distance) * trig::cos(g.bearing).max(0.0);
                 Some(Response::Twist {
                     v,
                     omega: 2.0 * g.bearing,
@@ -234,7 +235,7 @@ impl Named {
 
 /// A vector of length `length` at `angle` (robot frame).
 fn polar(angle: f64, length: f64) -> Vec2 {
-    Vec2::new(angle.cos(), angle.sin()) * length
+    Vec2::new(trig::cos(angle), trig::sin(angle)) * length
 }
 
 /// Something this far either side of the nose (rad, 60°) releases avoid;

@@ -1,5 +1,6 @@
 //! What a behaviour asks for, and how a body turns that into a command.
 
+use kinolab_common::trig;
 use kinolab_fields::descend::heading_command;
 use kinolab_world::{Body, Command};
 
@@ -55,7 +56,7 @@ impl Drive {
                 vx: dir.x * speed,
                 vy: dir.y * speed,
                 omega: if speed > 0.0 {
-                    self.heading_gain * v.y.atan2(v.x)
+                    self.heading_gain * trig::atan2(v.y, v.x)
                 } else {
                     0.0
                 },
@@ -75,7 +76,7 @@ impl Drive {
         let c = self.command(response);
         let heading = c.omega * LOOK_AHEAD / 2.0;
         let speed = c.vx.hypot(c.vy);
-        let along = c.vy.atan2(c.vx);
-        Vec2::new((heading + along).cos(), (heading + along).sin()) * speed
+        let along = trig::atan2(c.vy, c.vx);
+        Vec2::new(trig::cos(heading + along), trig::sin(heading + along)) * speed
     }
 }

@@ -118,11 +118,21 @@ pub fn fk_rover_all() -> f64 {
     })
 }
 
-/// The Puma tool's geometric Jacobian.
+thread_local! {
+    /// The Puma's workspace, kept between calls as the lab's widgets keep
+    /// theirs (and as Pinocchio's `Data` is kept).
+    static PUMA_WORK: std::cell::RefCell<kinolab_mechanism::Workspace> =
+        std::cell::RefCell::new(puma().map(|a| a.model.workspace()).unwrap_or_default());
+}
+
+/// The Puma tool's geometric Jacobian (6 × 6), into a kept workspace.
 pub fn jacobian_puma() -> f64 {
-    puma()
-        .and_then(|a| a.model.jacobian(black_box(&PUMA_Q), &a.tool).ok())
-        .map_or(f64::NAN, |j| j.norm())
+    let Some(a) = puma() else { return f64::NAN };
+    PUMA_WORK.with_borrow_mut(|work| {
+        a.model
+            .jacobian_in(work, black_box(&PUMA_Q), &a.tool)
+            .map_or(f64::NAN, |j| j[(0, 0)] + j[(5, 5)])
+    })
 }
 
 /// IK of 100 seeded reachable Puma targets from the zero pose.

@@ -21,7 +21,7 @@ impl Pose {
 
     /// This pose seen from `frame`: `frame` becomes the origin with heading 0.
     pub fn relative_to(&self, frame: &Pose) -> Pose {
-        let (s, c) = frame.theta.sin_cos();
+        let (s, c) = crate::trig::sin_cos(frame.theta);
         let (dx, dy) = (self.x - frame.x, self.y - frame.y);
         Pose::new(c * dx + s * dy, -s * dx + c * dy, self.theta - frame.theta)
     }
@@ -29,7 +29,7 @@ impl Pose {
     /// The inverse of [`Pose::relative_to`]: a pose given in `frame`, back
     /// in the world.
     pub fn from_frame(&self, frame: &Pose) -> Pose {
-        let (s, c) = frame.theta.sin_cos();
+        let (s, c) = crate::trig::sin_cos(frame.theta);
         Pose::new(
             frame.x + c * self.x - s * self.y,
             frame.y + s * self.x + c * self.y,

@@ -7,7 +7,8 @@
 //!   and every message kept to one printable line;
 //! - [`finite`]: the first NaN or infinity in a report, by its path;
 //! - [`feedback`]: [`Feedback`], what a graded exercise says back;
-//! - [`geometry`]: a pose in the plane and an axis-aligned rectangle.
+//! - [`geometry`]: a pose in the plane and an axis-aligned rectangle;
+//! - [`trig`]: sine, cosine and atan2, the same bits natively and in wasm.
 //!
 //! Nothing here knows about robots; the domain crates build on it.
 
@@ -18,6 +19,7 @@ pub mod feedback;
 pub mod finite;
 pub mod geometry;
 pub mod random;
+pub mod trig;
 
 pub use error::FieldError;
 pub use feedback::Feedback;

@@ -32,7 +32,7 @@ pub fn gaussian_hash(seed: u64, a: u64, b: u64) -> f64 {
     // 1 − u lies in (0, 1], so the logarithm is finite.
     let u = 1.0 - unit_hash(seed, a, b.wrapping_mul(2));
     let v = unit_hash(seed, a, b.wrapping_mul(2).wrapping_add(1));
-    (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+    (-2.0 * u.ln()).sqrt() * crate::trig::cos(std::f64::consts::TAU * v)
 }
 
 /// The top 53 bits of `bits` as a fraction in [0, 1).
@@ -71,14 +71,14 @@ impl SplitMix64 {
         // 1 − u lies in (0, 1], so the logarithm is finite.
         let u = 1.0 - self.unit();
         let v = self.unit();
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+        (-2.0 * u.ln()).sqrt() * crate::trig::cos(std::f64::consts::TAU * v)
     }
 
     /// Uniform over a disc of `radius` around the origin.
     pub fn in_disc(&mut self, radius: f64) -> [f64; 2] {
         let r = radius * self.unit().sqrt();
         let angle = std::f64::consts::TAU * self.unit();
-        [r * angle.cos(), r * angle.sin()]
+        [r * crate::trig::cos(angle), r * crate::trig::sin(angle)]
     }
 }
 

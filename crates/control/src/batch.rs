@@ -1,6 +1,7 @@
 //! Many starts at once: the textbook figure of trajectories from a circle of
 //! start poses, all ending at the goal.
 
+use kinolab_common::trig;
 use serde::Serialize;
 
 use crate::error::{FieldError, positive};
@@ -52,7 +53,7 @@ pub fn circle_starts(
     Ok((0..count)
         .map(|i| {
             let phi = std::f64::consts::TAU * i as f64 / count as f64;
-            let (s, c) = phi.sin_cos();
+            let (s, c) = trig::sin_cos(phi);
             let mut p = Pose::new(radius * c, radius * s, 0.0).from_frame(goal);
             p.theta = heading;
             p

@@ -5,6 +5,7 @@
 //! instant and where the robot *should* be. Nothing in it looks at where the
 //! robot actually is, which is the whole point of the lesson.
 
+use kinolab_common::trig;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{FieldError, finite, positive};
@@ -156,9 +157,9 @@ impl Segment {
         let sinc = if half.abs() < 1e-6 {
             1.0 - half * half / 6.0
         } else {
-            half.sin() / half
+            trig::sin(half) / half
         };
-        let (sm, cm) = (from.theta + half).sin_cos();
+        let (sm, cm) = trig::sin_cos(from.theta + half);
         Pose::new(
             from.x + along * sinc * cm,
             from.y + along * sinc * sm,

@@ -5,6 +5,7 @@
 //! would still have to turn through once it got there. The control law is
 //! linear in these three numbers: v = k_ρ ρ, ω = k_α α + k_β β.
 
+use kinolab_common::trig;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use nalgebra::{Complex, Matrix3};
@@ -77,7 +78,7 @@ impl Polar {
     #[inline]
     pub(crate) fn near(x: f64, y: f64, theta: f64, backward: bool) -> Self {
         let (dx, dy) = (-x, -y);
-        let bearing = dy.atan2(dx);
+        let bearing = trig::atan2(dy, dx);
         let rho = (dx * dx + dy * dy).sqrt();
         if backward {
             Self {

@@ -12,6 +12,7 @@
 //! Everything is integrated in the goal's frame (the controller's natural
 //! one) and turned back into world coordinates for the samples.
 
+use kinolab_common::trig;
 use kinolab_wheels::{Chassis, Vector3, WheelKind};
 use serde::Serialize;
 
@@ -355,7 +356,7 @@ impl Run {
             slip: [0.0; 2],
             push: [0.0; 3],
         };
-        let (sg, cg) = self.goal.theta.sin_cos();
+        let (sg, cg) = trig::sin_cos(self.goal.theta);
         let control_every = self
             .control_rate
             .map(|rate| ((1.0 / rate) / self.dt).round().max(1.0) as usize);
@@ -506,7 +507,7 @@ impl System<'_> {
     /// at every step, so they never drift; the step stays fourth-order.
     #[inline]
     fn rk4(&self, s: &[f64; 3], t: f64, h: f64, first: (f64, f64)) -> [f64; 3] {
-        let (sn, cs) = s[2].sin_cos();
+        let (sn, cs) = trig::sin_cos(s[2]);
         let z = [s[0], s[1], s[2], cs, sn];
         let at = |k: &[f64; 5], f: f64| -> [f64; 5] { std::array::from_fn(|i| z[i] + f * k[i]) };
         let k1 = self.rate_with(&z, first);

@@ -6,6 +6,7 @@
 //! larger meets no obstacle at all.
 
 use kinolab_common::random::SplitMix64;
+use kinolab_common::trig;
 use serde::Serialize;
 
 use crate::FieldError;
@@ -171,7 +172,7 @@ pub fn walk(beach: &Beach, size: f64) -> Result<Walk, FieldError> {
             .filter_map(|p| {
                 let (dx, dy) = (p.x - x, p.y - y);
                 let gap = dx.hypot(dy) - p.r;
-                let bearing = kinolab_common::angle::wrap(dy.atan2(dx) - heading);
+                let bearing = kinolab_common::angle::wrap(trig::atan2(dy, dx) - heading);
                 (gap < reach && bearing.abs() < 1.6).then_some((gap, bearing))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0));
@@ -192,7 +193,7 @@ pub fn walk(beach: &Beach, size: f64) -> Result<Walk, FieldError> {
                 hold -= 1;
             }
             None => {
-                let to_goal = (GOAL[1] - y).atan2(GOAL[0] - x);
+                let to_goal = trig::atan2(GOAL[1] - y, GOAL[0] - x);
                 heading += kinolab_common::angle::wrap(to_goal - heading).clamp(-TURN, TURN);
                 avoiding = false;
             }
@@ -200,7 +201,7 @@ pub fn walk(beach: &Beach, size: f64) -> Result<Walk, FieldError> {
         if avoiding || hold > 0 {
             heading += 0.2 * (wobble.unit() - 0.5);
         }
-        let (nx, ny) = (x + step * heading.cos(), y + step * heading.sin());
+        let (nx, ny) = (x + step * trig::cos(heading), y + step * trig::sin(heading));
         let blocked = beach
             .near(nx, ny)
             .any(|p| matters(p) && (p.x - nx).hypot(p.y - ny) < p.r + half);

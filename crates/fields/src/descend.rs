@@ -3,6 +3,7 @@
 
 use kinolab_common::angle::wrap;
 use kinolab_common::error::{in_range, positive};
+use kinolab_common::trig;
 use kinolab_wheels::{Vector3, integrate};
 use kinolab_world::Pose;
 use serde::Serialize;
@@ -159,8 +160,8 @@ pub fn heading_command(f: Vec2, theta: f64, k: f64, v_max: f64) -> (f64, f64) {
     if f.norm().is_nan() || f.norm() <= 0.0 {
         return (0.0, 0.0);
     }
-    let error = wrap(f.y.atan2(f.x) - theta);
-    (v_max.min(f.norm()) * error.cos().max(0.0), k * error)
+    let error = wrap(trig::atan2(f.y, f.x) - theta);
+    (v_max.min(f.norm()) * trig::cos(error).max(0.0), k * error)
 }
 
 /// A unicycle that follows the field.

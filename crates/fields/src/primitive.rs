@@ -4,6 +4,7 @@
 //! the distance d to its object, and a unit direction u. Each primitive also
 //! gives its exact Jacobian ∂F/∂p, which the minima search needs.
 
+use kinolab_common::trig;
 use serde::{Deserialize, Serialize};
 
 use crate::{FieldError, Mat2, Vec2};
@@ -239,7 +240,7 @@ impl Primitive {
         let m = self.gain;
         match self.source {
             Source::Uniform { direction } => (
-                Vec2::new(direction.cos(), direction.sin()) * m,
+                Vec2::new(trig::cos(direction), trig::sin(direction)) * m,
                 Mat2::zeros(),
             ),
             Source::Attractive { centre } => self.attract(p, centre),

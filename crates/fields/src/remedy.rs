@@ -3,6 +3,7 @@
 
 use kinolab_common::error::{non_negative, positive};
 use kinolab_common::random::unit_hash;
+use kinolab_common::trig;
 use kinolab_world::grid::Grid;
 use kinolab_world::{Obstacle, Rect};
 use serde::{Deserialize, Serialize};
@@ -100,7 +101,7 @@ impl Guide for Noise {
     fn vector(&mut self, field: &Field, p: Vec2, k: usize) -> Vec2 {
         let r = self.magnitude * unit_hash(self.seed, k as u64, 0).sqrt();
         let a = std::f64::consts::TAU * unit_hash(self.seed, k as u64, 1);
-        field.vector(p) + Vec2::new(a.cos(), a.sin()) * r
+        field.vector(p) + Vec2::new(trig::cos(a), trig::sin(a)) * r
     }
 
     fn stuck(&mut self, _field: &Field, _p: Vec2) -> bool {

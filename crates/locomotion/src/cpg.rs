@@ -4,6 +4,7 @@
 //! dθᵢ/dt = 2πν + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ), with ψᵢⱼ = 2π(φᵢ − φⱼ) from
 //! the gait's lift-off phases; integrated by classic RK4.
 
+use kinolab_common::trig;
 use std::f64::consts::TAU;
 
 use kinolab_common::error::{finite, in_range, non_negative, positive};
@@ -169,7 +170,7 @@ pub(crate) fn phase_rates(
             .filter(|&j| j != i)
             .map(|j| {
                 let psi = TAU * (phases[i] - phases[j]);
-                weight(i, j) * (theta[j] - theta[i] - psi).sin()
+                weight(i, j) * trig::sin(theta[j] - theta[i] - psi)
             })
             .sum();
         *rate = TAU * frequency + pull;

@@ -10,6 +10,7 @@
 //! ψᵢⱼ = 2π(φᵢ − φⱼ) from the lift-off phases φ; leg i lifts off when its
 //! phase crosses a multiple of 2π. Steps are classic RK4.
 
+use kinolab_common::trig;
 use std::f64::consts::TAU;
 
 use crate::cpg::cycle_distance;
@@ -91,8 +92,8 @@ impl Network {
         State {
             t: 0.0,
             theta: theta.to_vec(),
-            x: theta.iter().map(|t| 2.0 * t.cos()).collect(),
-            v: theta.iter().map(|t| -2.0 * w * t.sin()).collect(),
+            x: theta.iter().map(|t| 2.0 * trig::cos(*t)).collect(),
+            v: theta.iter().map(|t| -2.0 * w * trig::sin(*t)).collect(),
         }
     }
 
@@ -118,7 +119,7 @@ impl Network {
                         .filter(|&j| j != i)
                         .map(|j| {
                             // Oscillator j's state turned back by ψᵢⱼ.
-                            let (c, sn) = (self.psi(i, j).cos(), self.psi(i, j).sin());
+                            let (c, sn) = (trig::cos(self.psi(i, j)), trig::sin(self.psi(i, j)));
                             let q = -v[j] / wn;
                             let shifted_v = -wn * (q * c - x[j] * sn);
                             self.weights[i][j] * (shifted_v - v[i])
@@ -148,7 +149,7 @@ impl Network {
                 let w = self.omega().max(1e-9);
                 for i in 0..n {
                     // Unwrap the phase read from (x, −v/ω) next to the last one.
-                    let read = (-s.v[i] / w).atan2(s.x[i]);
+                    let read = trig::atan2(-s.v[i] / w, s.x[i]);
                     let turns = ((s.theta[i] - read) / TAU).round();
                     s.theta[i] = read + turns * TAU;
                 }

@@ -6,6 +6,7 @@
 //! over it), in swing it returns along an arc lifted `lift` metres. Feet
 //! the leg cannot reach are reported, never hidden.
 
+use kinolab_common::trig;
 use kinolab_mechanism::{FrameRef, Goal, Model, Options, Target, Vector3};
 use serde::Serialize;
 
@@ -95,7 +96,7 @@ impl Walker {
         } else {
             // Swing: forwards again along an arc.
             let s = sigma / (1.0 - beta);
-            let z = self.lift * (std::f64::consts::PI * s).sin();
+            let z = self.lift * trig::sin(std::f64::consts::PI * s);
             Vector3::new(n.x - stride / 2.0 + stride * s, n.y, n.z + z)
         }
     }

@@ -4,6 +4,7 @@ use nalgebra::DMatrix;
 
 use crate::error::FieldError;
 use crate::model::{FrameRef, Model, Pose};
+use crate::steps::{Motion, Step};
 
 /// Where everything is for one state: each body's frame and each joint's
 /// frame (the axis, before the joint moves), in the world.
@@ -82,16 +83,36 @@ impl Model {
 
     #[inline]
     pub(crate) fn pose_unchecked(&self, q: &[f64], frame: &FrameRef) -> Pose {
-        let mut t = Pose::identity();
-        for &j in &self.chains[frame.body] {
-            self.enter(&mut t, j);
-            self.cross(&mut t, j, q);
-        }
+        let t = self.walk(q, &self.chains[frame.body], |_, _, _| {});
         if frame.offset == Pose::identity() {
             t
         } else {
             t * frame.offset
         }
+    }
+
+    /// Walk `chain` (joints from the world down) at state `q` with the
+    /// prepared steps, showing `visit` each joint's axis frame before it
+    /// moves; returns the frame of the last joint's child body.
+    #[inline]
+    fn walk(&self, q: &[f64], chain: &[usize], mut visit: impl FnMut(usize, &Step, &Pose)) -> Pose {
+        let mut t = Pose::identity();
+        for (k, &j) in chain.iter().enumerate() {
+            let step = &self.steps[j];
+            match (&step.into, k) {
+                (Some(into), 0) => t = into.pose(),
+                (Some(into), _) => into.apply(&mut t),
+                (None, _) => {}
+            }
+            visit(j, step, &t);
+            step.motion.apply(&mut t, self.value(q, j) + step.offset);
+        }
+        if let Some(&last) = chain.last()
+            && !self.plain[last][1]
+        {
+            t *= self.joints[last].post;
+        }
+        t
     }
 
     /// The pose of `to` seen from `from`: from⁻¹ · to.
@@ -103,14 +124,38 @@ impl Model {
     /// then the angular velocity of the frame in the world, columns the
     /// joint variables. Joints not above the frame give zero columns.
     pub fn jacobian(&self, q: &[f64], frame: &FrameRef) -> Result<DMatrix<f64>, FieldError> {
+        let mut work = self.workspace();
+        self.jacobian_in(&mut work, q, frame)?;
+        Ok(work.jacobian)
+    }
+
+    /// [`Model::jacobian`] into a workspace kept between calls, so that
+    /// repeated queries allocate nothing.
+    pub fn jacobian_in<'w>(
+        &self,
+        work: &'w mut Workspace,
+        q: &[f64],
+        frame: &FrameRef,
+    ) -> Result<&'w DMatrix<f64>, FieldError> {
         self.check_state(q)?;
-        let mut jac = DMatrix::zeros(6, self.dof());
+        if work.jacobian.shape() != (6, self.dof()) {
+            work.jacobian = DMatrix::zeros(6, self.dof());
+        } else {
+            work.jacobian.fill(0.0);
+        }
         // One walk gives both the frame's point and the joints' axes.
-        let mut axes = Vec::new();
-        let p = self.walk_axes(q, frame, &mut axes).translation.vector;
-        crate::ik::add_columns(&axes, &p, 1.0, &mut jac);
-        self.fold_couplings(&mut jac);
-        Ok(jac)
+        let p = self.walk_axes(q, frame, &mut work.axes).translation.vector;
+        crate::ik::add_columns(&work.axes, &p, 1.0, &mut work.jacobian);
+        self.fold_couplings(&mut work.jacobian);
+        Ok(&work.jacobian)
+    }
+
+    /// A workspace for this model's queries.
+    pub fn workspace(&self) -> Workspace {
+        Workspace {
+            axes: Vec::with_capacity(self.dof()),
+            jacobian: DMatrix::zeros(6, self.dof()),
+        }
     }
 
     /// Walk down to `frame`, noting the world axis of every moving joint on
@@ -122,24 +167,29 @@ impl Model {
         out: &mut Vec<crate::ik::Axis>,
     ) -> Pose {
         out.clear();
-        let mut t = Pose::identity();
-        for &j in &self.chains[frame.body] {
-            let joint = &self.joints[j];
-            self.enter(&mut t, j);
+        let t = self.walk(q, &self.chains[frame.body], |j, step, t| {
             if let Some(v) = self.variable_of[j] {
                 out.push(crate::ik::Axis {
                     v,
-                    prismatic: joint.kind == crate::JointKind::Prismatic,
-                    z: t.rotation * joint.axis.into_inner(),
+                    prismatic: matches!(step.motion, Motion::Slide(_)),
+                    z: step.motion.world_axis(t),
                     o: t.translation.vector,
                 });
             }
-            self.cross(&mut t, j, q);
-        }
+        });
         if frame.offset == Pose::identity() {
             t
         } else {
             t * frame.offset
         }
     }
+}
+
+/// Scratch space for one model's queries, kept by whoever asks them (in
+/// the spirit of Pinocchio's `Data`): the Jacobian and the joint axes met
+/// on the way. The model itself stays stateless.
+#[derive(Debug, Clone, Default)]
+pub struct Workspace {
+    axes: Vec<crate::ik::Axis>,
+    jacobian: DMatrix<f64>,
 }

@@ -30,11 +30,12 @@ mod model;
 pub mod report;
 mod shapes;
 pub mod special;
+mod steps;
 
 pub use compose::{Closure, Coupling, Group, LoopClosure};
 pub use error::FieldError;
 pub use ik::{Goal, Options, Solution, Target};
-pub use kinematics::Placement;
+pub use kinematics::{Placement, Workspace};
 pub use model::{
     Body, Frame, FrameRef, Joint, JointKind, MAX_JOINTS, Model, ModelBuilder, Pose, WORLD,
 };

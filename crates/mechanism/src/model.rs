@@ -102,6 +102,8 @@ pub struct Model {
     /// For each joint, whether its origin and its post transform are the
     /// identity (DH joints have one of the two), so walks can skip them.
     pub(crate) plain: Vec<[bool; 2]>,
+    /// Each joint prepared for walks (see `steps`).
+    pub(crate) steps: Vec<crate::steps::Step>,
     /// Variables that follow others (`q_f = ratio · q_l + offset`).
     pub(crate) couplings: Vec<Coupling>,
     /// Loop constraints that close chains, with their passive variables.
@@ -237,6 +239,11 @@ impl ModelBuilder {
             .iter()
             .map(|j| [j.origin == Pose::identity(), j.post == Pose::identity()])
             .collect();
+        let mut parent_joint = vec![None; self.bodies.len()];
+        for (i, j) in joints.iter().enumerate() {
+            parent_joint[j.child] = Some(i);
+        }
+        let steps = crate::steps::prepare(&joints, &parent_joint);
         let mut model = Model {
             name: self.name,
             bodies: self.bodies,
@@ -246,6 +253,7 @@ impl ModelBuilder {
             variable_of,
             chains,
             plain,
+            steps,
             couplings: Vec::new(),
             loops: Vec::new(),
             shapes: self.shapes,

@@ -8,6 +8,7 @@
 //! the tests.
 
 use kinolab_common::angle::wrap;
+use kinolab_common::trig;
 use std::fmt;
 use std::sync::Arc;
 
@@ -107,7 +108,7 @@ impl ForwardCommand for PlanarForward {
         let (mut x, mut y, mut angle) = (0.0, 0.0, 0.0);
         for (l, qi) in self.links.iter().zip(q) {
             angle += qi;
-            let (s, c) = angle.sin_cos();
+            let (s, c) = trig::sin_cos(angle);
             x += l * c;
             y += l * s;
         }
@@ -126,8 +127,8 @@ fn two_link(l1: f64, l2: f64, x: f64, y: f64) -> Option<[[f64; 2]; 2]> {
     }
     let s2 = (1.0 - c2 * c2).max(0.0).sqrt();
     Some([s2, -s2].map(|s| {
-        let q2 = s.atan2(c2);
-        let q1 = y.atan2(x) - (l2 * s).atan2(l1 + l2 * c2);
+        let q2 = trig::atan2(s, c2);
+        let q1 = trig::atan2(y, x) - trig::atan2(l2 * s, l1 + l2 * c2);
         [wrap(q1), q2]
     }))
 }
@@ -214,7 +215,7 @@ impl InverseCommand for Planar3R {
         }
         let phi = pose.rotation.euler_angles().2;
         let [l1, l2, l3] = self.links;
-        let (wx, wy) = (p.x - l3 * phi.cos(), p.y - l3 * phi.sin());
+        let (wx, wy) = (p.x - l3 * trig::cos(phi), p.y - l3 * trig::sin(phi));
         let both = two_link(l1, l2, wx, wy)?;
         let candidates = both
             .iter()

@@ -1,6 +1,7 @@
 //! Classic robots, built from the same types a learner uses. Positions in
 //! metres in the robot frame (x forward, y left), P at the origin.
 
+use kinolab_common::trig;
 use std::f64::consts::FRAC_PI_2;
 
 use crate::chassis::Chassis;
@@ -100,7 +101,7 @@ fn steered(x: f64, y: f64, heading_deg: f64, r: f64) -> Wheel {
 /// A steered wheel at (x, y) turned so its axle points at `icr`, rolling
 /// forward for a turn about it to the left.
 fn steered_towards(x: f64, y: f64, icr: [f64; 2], r: f64) -> Wheel {
-    let to_icr = (icr[1] - y).atan2(icr[0] - x);
+    let to_icr = trig::atan2(icr[1] - y, icr[0] - x);
     Wheel::at(WheelKind::Steered, x, y, to_icr - FRAC_PI_2, r)
 }
 
@@ -125,7 +126,7 @@ fn ring(radius: f64, angles: [f64; 3], make: impl Fn(f64, f64, f64) -> Wheel) ->
         .iter()
         .map(|a| {
             let a = a.to_radians();
-            make(radius * a.cos(), radius * a.sin(), a)
+            make(radius * trig::cos(a), radius * trig::sin(a), a)
         })
         .collect()
 }

@@ -1,6 +1,7 @@
 //! A chassis: wheels on a rigid body, checked once when it is built, and
 //! the stacked constraint matrices of the reference sheet.
 
+use kinolab_common::trig;
 use nalgebra::{DMatrix, Vector3};
 
 use crate::error::{FieldError, bounded, finite, length};
@@ -209,7 +210,7 @@ impl Chassis {
                         // meeting point is at infinity, all axles parallel.
                         let [dx, dy] = turned.axle();
                         for &i in &group {
-                            let target = dy.atan2(dx) - wheels[i].alpha;
+                            let target = trig::atan2(dy, dx) - wheels[i].alpha;
                             wheels[i].beta = nearest_half_turn(wheels[i].beta, target);
                         }
                     }
@@ -259,7 +260,7 @@ pub(crate) fn beta_towards(wheel: &Wheel, icr: [f64; 2]) -> f64 {
     if dx.hypot(dy) < COINCIDENT {
         return wheel.beta;
     }
-    nearest_half_turn(wheel.beta, dy.atan2(dx) - wheel.alpha)
+    nearest_half_turn(wheel.beta, trig::atan2(dy, dx) - wheel.alpha)
 }
 
 /// Of `target` and `target + π`, the one nearest `current`, written close to
@@ -308,7 +309,7 @@ fn check_wheel(i: usize, w: &Wheel) -> Result<(), FieldError> {
         }
         WheelKind::Swedish { gamma } => {
             bounded(field("gamma_deg"), gamma.to_degrees(), MAX_ANGLE_DEG)?;
-            if gamma.cos() < 1e-6 {
+            if trig::cos(gamma) < 1e-6 {
                 return Err(FieldError::new(
                     field("gamma_deg"),
                     format!(

@@ -2,6 +2,7 @@
 //! the tests check that it does.
 
 use crate::error::{FieldError, finite, positive};
+use kinolab_common::trig;
 
 /// A differential drive's motion from its wheel ground speeds.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -56,13 +57,13 @@ pub fn tricycle(
     let l = positive("wheelbase", wheelbase)?;
     finite("steer", steer)?;
     finite("front_speed", front_speed)?;
-    if steer.cos().abs() < 1e-12 {
+    if trig::cos(steer).abs() < 1e-12 {
         return Err(FieldError::new(
             "steer",
             "at ±90° the front wheel pushes sideways and the rear axle cannot follow",
         ));
     }
-    let (s, c) = steer.sin_cos();
+    let (s, c) = trig::sin_cos(steer);
     let straight = s == 0.0;
     Ok(TricycleMotion {
         turn_radius: (!straight).then(|| l * c / s),
@@ -84,7 +85,7 @@ pub fn ackermann_outer(wheelbase: f64, track: f64, inner: f64) -> Result<f64, Fi
             "the inner steering angle must lie strictly between 0 and 90°",
         ));
     }
-    let cot_outer = 1.0 / inner.tan() + w / l;
+    let cot_outer = 1.0 / trig::tan(inner) + w / l;
     Ok((1.0 / cot_outer).atan())
 }
 

@@ -1,6 +1,7 @@
 //! Inverse kinematics (twist → wheel commands), forward kinematics (wheel
 //! spins → twist, by least squares) and pose integration.
 
+use kinolab_common::trig;
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use serde::Serialize;
 
@@ -161,7 +162,7 @@ fn align(w: &Wheel, twist: &Vector3<f64>) -> WheelCommand {
         return command(0.0, w.beta, 0.0);
     }
     // Rolling direction (sin(α+β), −cos(α+β)) ∥ u ⇔ α + β = atan2(u_x, −u_y).
-    let beta = nearest_half_turn(w.beta, ux.atan2(-uy) - w.alpha);
+    let beta = nearest_half_turn(w.beta, trig::atan2(ux, -uy) - w.alpha);
     let mut steered = w.clone();
     steered.beta = beta;
     let [tx, ty] = steered.rolling_direction();
@@ -176,7 +177,7 @@ fn roll_ball(w: &Wheel, twist: &Vector3<f64>) -> WheelCommand {
     if speed <= 1e-12 * (1.0 + twist.norm()) {
         return command(0.0, w.beta, 0.0);
     }
-    command(speed / w.radius, wrap(ux.atan2(-uy) - w.alpha), 0.0)
+    command(speed / w.radius, wrap(trig::atan2(ux, -uy) - w.alpha), 0.0)
 }
 
 /// Forward kinematics: the chassis twist that best explains the spins.
@@ -305,7 +306,7 @@ fn solve_svd(rows: &[(Vector3<f64>, f64)]) -> (Vector3<f64>, bool) {
 
 /// R(θ): maps inertial motion to robot-frame motion, ξ̇_R = R(θ) ξ̇_I.
 pub fn rotation(theta: f64) -> Matrix3<f64> {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = trig::sin_cos(theta);
     Matrix3::new(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0)
 }
 
@@ -325,9 +326,9 @@ pub fn integrate(pose: [f64; 3], twist: Vector3<f64>, dt: f64) -> [f64; 3] {
     let sinc = if half.abs() < 1e-4 {
         1.0 - half * half / 6.0
     } else {
-        half.sin() / half
+        trig::sin(half) / half
     };
-    let (s, c) = mid.sin_cos();
+    let (s, c) = trig::sin_cos(mid);
     let k = dt * sinc;
     [
         x + k * (twist.x * c - twist.y * s),

@@ -2,6 +2,7 @@
 //! constraint rows it contributes (reference sheet, "One row per constraint").
 
 use kinolab_common::angle::wrap;
+use kinolab_common::trig;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -111,7 +112,7 @@ impl Wheel {
     /// Converts to the (l, α, β) of the reference sheet.
     pub fn at(kind: WheelKind, x: f64, y: f64, heading: f64, radius: f64) -> Self {
         let l = x.hypot(y);
-        let alpha = if l > 0.0 { y.atan2(x) } else { 0.0 };
+        let alpha = if l > 0.0 { trig::atan2(y, x) } else { 0.0 };
         // Rolling forward along (sin(α+β), −cos(α+β)) = (cos h, sin h)
         // means α + β = h + π/2.
         let beta = wrap(heading + std::f64::consts::FRAC_PI_2 - alpha);
@@ -120,13 +121,16 @@ impl Wheel {
 
     /// Centre of the wheel in the robot frame.
     pub fn position(&self) -> [f64; 2] {
-        [self.l * self.alpha.cos(), self.l * self.alpha.sin()]
+        [
+            self.l * trig::cos(self.alpha),
+            self.l * trig::sin(self.alpha),
+        ]
     }
 
     /// Unit vector along the axle, n = (cos(α+β), sin(α+β)): the wheel
     /// cannot slide this way.
     pub fn axle(&self) -> [f64; 2] {
-        let (s, c) = (self.alpha + self.beta).sin_cos();
+        let (s, c) = trig::sin_cos(self.alpha + self.beta);
         [c, s]
     }
 
@@ -145,8 +149,8 @@ impl Wheel {
     /// The rolling and sliding rows exactly as in the reference sheet.
     pub fn rows(&self) -> WheelRows {
         let (l, a, b, r) = (self.l, self.alpha, self.beta, self.radius);
-        let (sab, cab) = (a + b).sin_cos();
-        let (sb, cb) = b.sin_cos();
+        let (sab, cab) = trig::sin_cos(a + b);
+        let (sb, cb) = trig::sin_cos(b);
         let standard_rolling = Vector3::new(sab, -cab, -l * cb);
         let standard_sliding = Vector3::new(cab, sab, l * sb);
         match self.kind {
@@ -163,14 +167,14 @@ impl Wheel {
                 sliding_extra: SlidingExtra::SteerRate { offset },
             },
             WheelKind::Swedish { gamma } => {
-                let (sabg, cabg) = (a + b + gamma).sin_cos();
-                let (sbg, cbg) = (b + gamma).sin_cos();
+                let (sabg, cabg) = trig::sin_cos(a + b + gamma);
+                let (sbg, cbg) = trig::sin_cos(b + gamma);
                 WheelRows {
                     rolling: Vector3::new(sabg, -cabg, -l * cbg),
-                    spin_gain: r * gamma.cos(),
+                    spin_gain: r * trig::cos(gamma),
                     sliding: Vector3::new(cabg, sabg, l * sbg),
                     sliding_extra: SlidingExtra::Rollers {
-                        spin_gain: r * gamma.sin(),
+                        spin_gain: r * trig::sin(gamma),
                     },
                 }
             }

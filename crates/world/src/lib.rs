@@ -15,6 +15,8 @@
 //! Conventions: metres, seconds, radians; world frame x right, y up; a
 //! robot's own frame has x forward and y to its left.
 
+use kinolab_common::trig;
+
 pub mod body;
 pub mod catalogue;
 mod file;
@@ -38,6 +40,6 @@ pub type Vec2 = nalgebra::Vector2<f64>;
 
 /// The vector at `angle` with length 1.
 pub fn unit(angle: f64) -> Vec2 {
-    let (s, c) = angle.sin_cos();
+    let (s, c) = trig::sin_cos(angle);
     Vec2::new(c, s)
 }

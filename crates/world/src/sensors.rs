@@ -7,6 +7,7 @@
 use kinolab_common::angle::wrap;
 use kinolab_common::error::{in_range, non_negative, positive};
 use kinolab_common::random::gaussian_hash;
+use kinolab_common::trig;
 use serde::{Deserialize, Serialize};
 
 use crate::{FieldError, Pose, Vec2, World, unit};
@@ -300,7 +301,7 @@ impl Reading<'_> {
         let goal = self.world.goal?;
         let to = goal - self.position();
         Some(GoalPercept {
-            bearing: wrap(to.y.atan2(to.x) - self.pose.theta),
+            bearing: wrap(trig::atan2(to.y, to.x) - self.pose.theta),
             distance: to.norm(),
         })
     }
@@ -308,7 +309,7 @@ impl Reading<'_> {
 
 /// Which bumper a contact at `point` presses, for a robot at `pose`.
 pub(crate) fn bumper(pose: &Pose, point: Vec2) -> usize {
-    let bearing = wrap((point.y - pose.y).atan2(point.x - pose.x) - pose.theta);
+    let bearing = wrap(trig::atan2(point.y - pose.y, point.x - pose.x) - pose.theta);
     let quarter = std::f64::consts::FRAC_PI_4;
     if bearing.abs() <= quarter {
         0

@@ -7,6 +7,7 @@
 //! turn or back away) and its bumper raises an event.
 
 use kinolab_common::random::gaussian_hash;
+use kinolab_common::trig;
 use kinolab_wheels::{Vector3, integrate};
 use serde::Serialize;
 
@@ -217,7 +218,7 @@ impl Sim {
                 // Touching: press the bumpers, and slide along whatever is
                 // touched (the push into it is lost). Everything else is
                 // farther than a contact width, so one contact width is safe.
-                let (s, c) = self.pose.theta.sin_cos();
+                let (s, c) = trig::sin_cos(self.pose.theta);
                 let mut velocity =
                     Vec2::new(c * twist.vx - s * twist.vy, s * twist.vx + c * twist.vy);
                 let contacts = self.world.touching(here, radius + CONTACT, self.time);

@@ -9,7 +9,8 @@
 //!   native tests of the crates it touches and their dependents.
 //! - `dist`: build the static site into `dist/`.
 //! - `bench`: native (criterion) and wasm (headless Chromium) benchmarks
-//!   side by side, wasm size, and time to first frame.
+//!   side by side, wasm size, and time to first frame; `bench --anchors`
+//!   the mechanism kernels beside Pinocchio, pair by pair.
 //! - `fuzz [--cases N] [--seed S]`: the long reliability run of the
 //!   `kinolab` command (100 000 generated cases by default), its table of
 //!   counts per command and class; failing cases join the regression folder.
@@ -17,6 +18,7 @@
 //! Every tool is installed from a package registry by name; nothing
 //! downloads binaries at run time (trunk runs with `--offline`).
 
+mod anchors;
 mod changes;
 mod setup;
 mod tasks;
@@ -38,7 +40,7 @@ fn main() -> ExitCode {
         "setup" => setup::ensure(setup::Needs { browser: true }),
         _ => {
             eprintln!(
-                "usage: cargo xtask <serve [--dev] | test | check | dist | bench [--quick] | fuzz [--cases N] | setup>"
+                "usage: cargo xtask <serve [--dev] | test | check | dist | bench [--quick | --anchors] | fuzz [--cases N] | setup>"
             );
             return ExitCode::from(2);
         }

@@ -196,6 +196,9 @@ fn chromedriver() -> String {
 /// Benchmarks: criterion natively, the same kernels as wasm in headless
 /// Chromium, then size and start-up figures.
 pub fn bench(args: &[String]) -> Result {
+    if args.iter().any(|a| a == "--anchors") {
+        return crate::anchors::anchors();
+    }
     ensure(Needs { browser: true })?;
     let quick = args.iter().any(|a| a == "--quick");
     let mut criterion = cargo(&[

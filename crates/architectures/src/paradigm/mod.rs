@@ -11,6 +11,7 @@ pub use hybrid::{Hybrid, Sequencer};
 pub use reactive::Reactive;
 
 use kinolab_common::angle::wrap;
+use kinolab_common::trig;
 use kinolab_world::sensors::{GoalPercept, Percepts};
 use kinolab_world::{Body, Command, FieldError, Pose, Vec2, unit};
 use serde::{Deserialize, Serialize};
@@ -165,7 +166,7 @@ pub fn aimed_at(p: &Percepts, target: Vec2) -> Percepts {
     let to = target - Vec2::new(o.x, o.y);
     Percepts {
         goal: Some(GoalPercept {
-            bearing: wrap(to.y.atan2(to.x) - o.theta),
+            bearing: wrap(trig::atan2(to.y, to.x) - o.theta),
             distance: to.norm(),
         }),
         ..p.clone()
@@ -186,7 +187,7 @@ fn head_for(
         return Command::STOP;
     }
     let speed = drive.body.max_speed() * (d / slow_within).min(1.0);
-    let (s, c) = (-pose.theta).sin_cos();
+    let (s, c) = trig::sin_cos(-pose.theta);
     let local = Vec2::new(c * to.x - s * to.y, s * to.x + c * to.y);
     drive.follow(local / d * speed)
 }

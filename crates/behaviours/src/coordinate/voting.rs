@@ -2,6 +2,7 @@
 //! behaviour gives every arc a vote in [−1, 1]; votes are weighted and
 //! summed, and the arc with the highest total wins.
 
+use kinolab_common::trig;
 use std::collections::BTreeMap;
 
 use kinolab_common::angle::wrap;
@@ -113,8 +114,11 @@ impl Voting {
         if want.norm() < 1e-12 {
             return vec![0.0; chords.len()];
         }
-        let heading = want.y.atan2(want.x);
-        chords.iter().map(|a| wrap(a - heading).cos()).collect()
+        let heading = trig::atan2(want.y, want.x);
+        chords
+            .iter()
+            .map(|a| trig::cos(wrap(a - heading)))
+            .collect()
     }
 
     pub fn decide(

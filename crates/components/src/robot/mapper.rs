@@ -2,6 +2,7 @@
 //! sees (scan endpoints, grown by the robot's clearance) and answers map
 //! queries with a copy of its grid.
 
+use kinolab_common::trig;
 use kinolab_world::grid::Grid;
 use kinolab_world::{Pose, Rect, Vec2};
 use serde::Deserialize;
@@ -57,7 +58,7 @@ impl Mapper {
             .filter(|&(_, range)| range < max - 1e-6)
             .map(|(angle, range)| {
                 let a = pose.theta + angle;
-                Vec2::new(pose.x + range * a.cos(), pose.y + range * a.sin())
+                Vec2::new(pose.x + range * trig::cos(a), pose.y + range * trig::sin(a))
             })
             .collect();
         // Hits on what the map already blocks change nothing.

@@ -5,6 +5,7 @@
 
 use kinolab_architectures::follow::Follower;
 use kinolab_common::angle::wrap;
+use kinolab_common::trig;
 use kinolab_world::Vec2;
 use serde::Deserialize;
 
@@ -69,8 +70,8 @@ impl Motion {
         if d < 0.05 {
             return [0.0; 2];
         }
-        let error = wrap(to.y.atan2(to.x) - pose.theta);
-        let v = self.speed * error.cos().max(0.0) * (d / 0.5).min(1.0);
+        let error = wrap(trig::atan2(to.y, to.x) - pose.theta);
+        let v = self.speed * trig::cos(error).max(0.0) * (d / 0.5).min(1.0);
         [v, (2.0 * error).clamp(-2.0, 2.0)]
     }
 }

@@ -1,5 +1,6 @@
 //! Arms described by DH tables, each with a capsule around every link.
 
+use kinolab_common::trig;
 use std::f64::consts::FRAC_PI_2;
 
 use crate::dh::{Convention, DhRow, chain_builder, shift};
@@ -39,7 +40,7 @@ fn standard_link_shapes(b: &mut ModelBuilder, rows: &[DhRow], radius: f64) {
         let body = i + 2;
         // In body i's frame the previous origin sits at Rx(α)ᵀ·(−a, 0, 0)
         // minus d along the previous z, which is the body's y rotated by α.
-        let (s, c) = r.alpha.sin_cos();
+        let (s, c) = trig::sin_cos(r.alpha);
         let d = if r.kind == JointKind::Prismatic {
             0.0
         } else {
@@ -147,7 +148,7 @@ pub fn panda() -> Result<Model, FieldError> {
     // segment to joint i is fixed in the previous body: from its origin to
     // Rx(α)·(a, 0, d).
     for (i, r) in rows.iter().enumerate() {
-        let (s, c) = r.alpha.sin_cos();
+        let (s, c) = trig::sin_cos(r.alpha);
         b.shape(i + 1, [0.0; 3], [r.a, -r.d * s, r.d * c], 0.06);
     }
     b.shape(rows.len() + 1, [0.0; 3], [0.0, 0.0, 0.107], 0.05);

@@ -3,6 +3,7 @@
 //!
 //! Axes: x forward, y to the left, z up; metres and radians.
 
+use kinolab_common::trig;
 use nalgebra::{Unit, Vector3};
 
 use crate::dh::{rot_z, shift};
@@ -307,8 +308,11 @@ pub fn four_bar(l: FourBar) -> Result<Model, FieldError> {
         ));
     }
     let at_b = cos_b.acos();
-    let c = [l.crank + l.coupler * at_b.cos(), l.coupler * at_b.sin()];
-    let to_d = (-c[1]).atan2(l.ground - c[0]);
+    let c = [
+        l.crank + l.coupler * trig::cos(at_b),
+        l.coupler * trig::sin(at_b),
+    ];
+    let to_d = trig::atan2(-c[1], l.ground - c[0]);
     let mut b = ModelBuilder::new("Four-bar linkage");
     let z = Vector3::z_axis();
     let crank = hinge(&mut b, "crank", 0, Pose::identity(), z, None);
