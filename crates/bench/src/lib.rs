@@ -179,6 +179,23 @@ fn control_run() -> f64 {
     }
 }
 
+/// The floor under [`control_run`]: its 40 000 bearings (four per RK4
+/// step, 10 000 steps) as bare `atan2` calls on a path of the same scale,
+/// from (−1, 0.5) towards the goal. Each call's input depends on the one
+/// before, as each RK4 stage's does on the stage before: the run cannot
+/// start a bearing before the last one is known, and neither can this.
+fn atan2_floor() -> f64 {
+    let (x0, y0) = black_box((-1.0f64, 0.5f64));
+    let mut bearing = 0.0;
+    let mut sum = 0.0;
+    for i in 0..40_000 {
+        let f = 1.0 - f64::from(i) * 2.5e-5 + 1e-12 * bearing;
+        bearing = kinolab_common::trig::atan2(-y0 * f, -x0 * f + 1e-3);
+        sum += bearing;
+    }
+    sum
+}
+
 /// The playground's "many starts" view: 100 starts on the unit circle at
 /// the preview step.
 fn control_batch() -> f64 {
@@ -234,6 +251,10 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "control_run_10s_1khz",
         run: control_run,
+    },
+    Kernel {
+        name: "control_atan2_floor_40k",
+        run: atan2_floor,
     },
     Kernel {
         name: "control_batch_100_starts",

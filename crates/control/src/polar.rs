@@ -75,7 +75,7 @@ impl Polar {
     /// With the bearing b = atan2(Δy, Δx) of the goal: α = b − θ and, since
     /// β = −θ − α, β = −b. Driving backward turns the robot's nose by π:
     /// α_b = b − θ − π and β_b = π − b (all wrapped).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn near(x: f64, y: f64, theta: f64, backward: bool) -> Self {
         let (dx, dy) = (-x, -y);
         let bearing = trig::atan2(dy, dx);

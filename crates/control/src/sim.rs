@@ -355,6 +355,7 @@ impl Run {
             held: None,
             slip: [0.0; 2],
             push: [0.0; 3],
+            disturbed: self.noise.is_some(),
         };
         let (sg, cg) = trig::sin_cos(self.goal.theta);
         let control_every = self
@@ -457,15 +458,18 @@ struct System<'a> {
     /// This noise interval's slip (of v, of ω) and push (goal frame).
     slip: [f64; 2],
     push: [f64; 3],
+    /// Whether the run has noise (slip and push), or both stay zero.
+    disturbed: bool,
 }
 
 impl System<'_> {
+    #[inline(always)]
     fn polar(&self, s: &[f64; 3]) -> Polar {
         Polar::near(s[0], s[1], s[2], self.backward)
     }
 
     /// The commanded (v, ω) in state `s` at time `t`, after saturation.
-    #[inline]
+    #[inline(always)]
     fn command(&self, s: &[f64; 3], t: f64) -> (f64, f64) {
         if let Some(held) = self.held {
             return held;
@@ -491,6 +495,10 @@ impl System<'_> {
     /// [`System::rate`] for an already computed command.
     #[inline]
     fn rate_with(&self, z: &[f64; 5], (v, omega): (f64, f64)) -> [f64; 5] {
+        if !self.disturbed {
+            // Without noise: the same numbers, four operations shorter.
+            return [v * z[3], v * z[4], omega, -omega * z[4], omega * z[3]];
+        }
         let (v, omega) = (v * (1.0 - self.slip[0]), omega * (1.0 - self.slip[1]));
         let turn = omega + self.push[2];
         [
