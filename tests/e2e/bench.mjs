@@ -27,6 +27,15 @@ await page.waitForFunction(() => window.benchReady, null, { timeout: 60_000 });
 const names = (await page.evaluate(() => window.bench.kernel_names())).split(",");
 const rows = [];
 for (const name of names) {
+  // Warm up first: Chromium starts wasm in its baseline compiler and
+  // optimises hot functions in the background, so a kernel measured at
+  // once may still run unoptimised code (lesson_parse measured 3× slower
+  // that way). Half a second of calls, then a pause for the compiler.
+  await page.evaluate((name) => {
+    const end = performance.now() + 500;
+    while (performance.now() < end) window.bench.run_kernel(name, 1);
+  }, name);
+  await page.waitForTimeout(200);
   const wasmNs = await page.evaluate((name) => {
     // Calibrate so one sample lasts about 20 ms, then take 15 samples.
     let iterations = 1;

@@ -50,7 +50,7 @@ export function serve(root) {
 }
 
 /** Launch Debian's headless Chromium with the flags this machine needs. */
-export async function launch() {
+export async function launch(extraArgs = []) {
   const { chromium } = await import("../../web/node_modules/playwright-core/index.mjs");
   return chromium.launch({
     executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
@@ -59,6 +59,7 @@ export async function launch() {
       "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
       "--disable-background-networking", "--disable-component-update", "--disable-sync",
       "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+      ...extraArgs,
     ],
   });
 }

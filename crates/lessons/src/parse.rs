@@ -116,8 +116,12 @@ impl<'src> BodyParser<'_, 'src> {
         self.events.get(self.pos)
     }
 
+    /// Take the next event (each is read once: no copy of its text).
     fn next(&mut self) -> Option<(Event<'src>, Range<usize>)> {
-        let item = self.events.get(self.pos).cloned();
+        let item = self
+            .events
+            .get_mut(self.pos)
+            .map(|slot| std::mem::replace(slot, (Event::Rule, 0..0)));
         self.pos += 1;
         item
     }
@@ -126,8 +130,8 @@ impl<'src> BodyParser<'_, 'src> {
     /// consumed) or the end of the input.
     fn blocks(&mut self) -> Result<Vec<Block>, LessonError> {
         let mut blocks = Vec::new();
-        while let Some((event, range)) = self.peek().cloned() {
-            if is_inline_event(&event) {
+        while let Some((event, _)) = self.peek() {
+            if is_inline_event(event) {
                 // A tight list item holds text without a paragraph around it.
                 let inline = self.inline()?;
                 if !inline.is_empty() {
@@ -135,7 +139,9 @@ impl<'src> BodyParser<'_, 'src> {
                 }
                 continue;
             }
-            self.pos += 1;
+            let Some((event, range)) = self.next() else {
+                break;
+            };
             match event {
                 Event::End(_) => return Ok(blocks),
                 Event::Start(tag) => {
@@ -294,12 +300,14 @@ impl<'src> BodyParser<'_, 'src> {
         let mut strike = 0u32;
         let mut links: Vec<String> = Vec::new();
         let mut depth = 0u32;
-        while let Some((event, range)) = self.peek().cloned() {
+        while let Some((event, _)) = self.peek() {
             let closes_inline_tag = depth > 0 && matches!(event, Event::End(_));
-            if !(is_inline_event(&event) || closes_inline_tag) {
+            if !(is_inline_event(event) || closes_inline_tag) {
                 break;
             }
-            self.pos += 1;
+            let Some((event, range)) = self.next() else {
+                break;
+            };
             match event {
                 Event::Start(Tag::Image { dest_url, .. }) => {
                     let alt = self.image_alt();
