@@ -73,6 +73,18 @@ pub fn shown(value: f64) -> String {
     }
 }
 
+/// [`finite`] for a field whose name must be built (`q[3]`): `field` is
+/// only called when the value is bad, so checks in a hot loop do not
+/// format a name per value.
+#[inline]
+pub fn finite_at(value: f64, field: impl FnOnce() -> String) -> Result<f64, FieldError> {
+    if value.is_finite() && value.abs() <= MAGNITUDE_LIMIT {
+        Ok(value)
+    } else {
+        finite(field(), value)
+    }
+}
+
 /// `value` if it is a number the lab can compute with: finite, and no
 /// larger than [`MAGNITUDE_LIMIT`] (whose squares and products stay
 /// finite), else an error naming `field`. Every number read from a file,

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::angle::wrap;
-use crate::error::{FieldError, finite};
+use crate::error::{FieldError, finite_at};
 
 /// A pose (x, y, θ): metres and radians, in the world frame unless said
 /// otherwise.
@@ -80,7 +80,7 @@ impl Rect {
     /// errors name `field`.
     pub fn new(field: &str, corners: [f64; 4]) -> Result<Self, FieldError> {
         for (i, v) in corners.iter().enumerate() {
-            finite(format!("{field}[{i}]"), *v)?;
+            finite_at(*v, || format!("{field}[{i}]"))?;
         }
         let r = Rect::from(corners);
         if r.x_min < r.x_max && r.y_min < r.y_max {

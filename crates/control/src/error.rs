@@ -1,4 +1,4 @@
 //! Bad input is a [`FieldError`] naming the field, shared by every crate.
 
 pub use kinolab_common::FieldError;
-pub(crate) use kinolab_common::error::{finite, positive};
+pub(crate) use kinolab_common::error::{finite, finite_at, positive};

@@ -253,7 +253,7 @@ fn from_file(file: &RunFile) -> Result<RunSpec, FieldError> {
 fn check_degrees(segments: &[SegmentFile], limits: Option<&LimitsFile>) -> Result<(), FieldError> {
     for (i, s) in segments.iter().enumerate() {
         if let SegmentFile::Arc { angle_deg, .. } | SegmentFile::Turn { angle_deg } = s {
-            crate::error::finite(format!("controller.segments[{i}].angle_deg"), *angle_deg)?;
+            crate::error::finite_at(*angle_deg, || format!("controller.segments[{i}].angle_deg"))?;
         }
     }
     if let Some(l) = limits {

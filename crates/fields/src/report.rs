@@ -23,8 +23,8 @@ pub struct Minima {
 pub fn vectors(field: &Field, points: &[[f64; 2]]) -> Result<Vectors, FieldError> {
     let mut vectors = Vec::with_capacity(points.len());
     for (i, [x, y]) in points.iter().enumerate() {
-        kinolab_common::error::finite(format!("at[{i}]"), *x)?;
-        kinolab_common::error::finite(format!("at[{i}]"), *y)?;
+        kinolab_common::error::finite_at(*x, || format!("at[{i}]"))?;
+        kinolab_common::error::finite_at(*y, || format!("at[{i}]"))?;
         let f = field.vector(Vec2::new(*x, *y));
         vectors.push([f.x, f.y]);
     }

@@ -7,7 +7,7 @@
 use kinolab_common::trig;
 use std::f64::consts::TAU;
 
-use kinolab_common::error::{finite, in_range, non_negative, positive};
+use kinolab_common::error::{finite, finite_at, in_range, non_negative, positive};
 use serde::Deserialize;
 
 use crate::error::FieldError;
@@ -90,7 +90,7 @@ impl Cpg {
                     "must be in [0, 1): 1 is the same phase as 0",
                 ));
             }
-            finite(format!("initial_deg[{i}]"), theta)?;
+            finite_at(theta, || format!("initial_deg[{i}]"))?;
         }
         finite("frequency", self.frequency)?;
         non_negative("weight", self.weight)?;

@@ -11,7 +11,7 @@
 use nalgebra::{Translation3, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
-use crate::error::{FieldError, finite};
+use crate::error::{FieldError, finite_at};
 use crate::model::{JointKind, Model, ModelBuilder, Pose};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -89,7 +89,7 @@ pub fn chain_builder(
             ("theta_deg", r.theta.to_degrees()),
             offset,
         ] {
-            finite(format!("joints[{i}].{field}"), v)?;
+            finite_at(v, || format!("joints[{i}].{field}"))?;
         }
         if r.kind == JointKind::Fixed {
             return Err(FieldError::new(

@@ -520,7 +520,7 @@ impl Model {
                 Target::Orientation(_) => Vector3::zeros(),
             };
             for v in p.iter() {
-                crate::error::finite(format!("goals[{i}].position"), *v)?;
+                crate::error::finite_at(*v, || format!("goals[{i}].position"))?;
             }
         }
         let mut solution = self.solve_checked(goals, seed, options)?;

@@ -476,7 +476,7 @@ impl Model {
         // The field name is only written out when something is wrong.
         let limit = crate::error::MAGNITUDE_LIMIT;
         if let Some(i) = q.iter().position(|v| !v.is_finite() || v.abs() > limit) {
-            crate::error::finite(format!("q[{i}]"), q[i])?;
+            crate::error::finite_at(q[i], || format!("q[{i}]"))?;
         }
         Ok(())
     }

@@ -14,7 +14,7 @@ use parry2d_f64::math::{Pose as Pose2, Vector as V2};
 use parry2d_f64::query;
 use parry2d_f64::shape::{Ball, Capsule, Cuboid, Shape as ParryShape};
 
-use crate::error::{FieldError, finite};
+use crate::error::{FieldError, finite, finite_at};
 use crate::model::Model;
 
 /// A capsule on a body: the segment `a`–`b` (body frame, m) swollen by
@@ -33,7 +33,7 @@ impl Shape {
             return Err(FieldError::new(format!("{field}.body"), "no such body"));
         }
         for v in self.a.iter().chain(self.b.iter()) {
-            finite(format!("{field}.a"), *v)?;
+            finite_at(*v, || format!("{field}.a"))?;
         }
         if !(self.radius.is_finite() && self.radius > 0.0) {
             return Err(FieldError::new(

@@ -1,4 +1,4 @@
 //! Bad input is a [`FieldError`] naming the field, shared by every crate.
 
 pub use kinolab_common::FieldError;
-pub(crate) use kinolab_common::error::{bounded, finite, length, positive};
+pub(crate) use kinolab_common::error::{bounded, finite, finite_at, length, positive};

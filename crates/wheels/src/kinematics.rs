@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use crate::analysis::line_row;
 use crate::chassis::{Chassis, group_meeting_point, nearest_half_turn};
-use crate::error::{FieldError, finite};
+use crate::error::{FieldError, finite_at};
 use kinolab_common::angle::wrap;
 
 use crate::wheel::{SlidingExtra, Wheel, WheelKind};
@@ -52,7 +52,7 @@ fn tolerance(twist: &Vector3<f64>, wheel: &Wheel) -> f64 {
 
 fn check_twist(twist: &Vector3<f64>) -> Result<(), FieldError> {
     for (i, v) in twist.iter().enumerate() {
-        finite(format!("twist[{i}]"), *v)?;
+        finite_at(*v, || format!("twist[{i}]"))?;
     }
     Ok(())
 }
@@ -244,7 +244,7 @@ impl Chassis {
         let mut rows = Vec::with_capacity(2 * spins.len());
         for (i, ((w, r), spin)) in self.wheels().iter().zip(self.rows()).zip(spins).enumerate() {
             if let Some(spin) = spin {
-                finite(format!("wheels[{i}]"), *spin)?;
+                finite_at(*spin, || format!("wheels[{i}]"))?;
                 if w.kind != WheelKind::Spherical {
                     rows.push((r.rolling, r.spin_gain * spin));
                 }

@@ -92,7 +92,7 @@ struct ObstacleEntry {
 
 fn point(field: &str, q: [f64; 2]) -> Result<Vec2, FieldError> {
     for (i, v) in q.iter().enumerate() {
-        kinolab_common::error::finite(format!("{field}[{i}]"), *v)?;
+        kinolab_common::error::finite_at(*v, || format!("{field}[{i}]"))?;
     }
     Ok(Vec2::new(q[0], q[1]))
 }
