@@ -73,6 +73,12 @@ pub(super) fn path(painter: &Painter, view: &PlaneView, samples: &[Sample], stro
 }
 
 /// A differential-drive robot from above: body, nose, two wheels.
+/// The screen area [`robot`] covers, for labels to keep clear of.
+pub(super) fn robot_area(view: &PlaneView, p: &Pose) -> Rect {
+    let reach = view.length(BODY * 1.3).max(8.0) + 3.0;
+    Rect::from_center_size(view.to_screen([p.x, p.y]), vec2(2.0 * reach, 2.0 * reach))
+}
+
 pub(super) fn robot(painter: &Painter, view: &PlaneView, p: &Pose, color: Color32) {
     let (s, c) = p.theta.sin_cos();
     let local = |x: f64, y: f64| view.to_screen([p.x + c * x - s * y, p.y + s * x + c * y]);

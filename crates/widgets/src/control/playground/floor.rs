@@ -99,15 +99,20 @@ impl Playground {
         held
     }
 
-    /// The start and goal poses, named; the goal alone when `start` is off.
+    /// The start and goal poses, named (the goal alone when `start` is
+    /// off), their names clear of the robot drawn at `robot`.
     pub(super) fn draw_ends(
         &self,
         ui: &egui::Ui,
         painter: &Painter,
         view: &PlaneView,
         start: bool,
+        robot: Option<&Pose>,
     ) {
         let mut labels = Labels::default();
+        if let Some(p) = robot {
+            labels.reserve(field::robot_area(view, p));
+        }
         field::pose(
             painter,
             &mut labels,

@@ -16,14 +16,17 @@ impl Playground {
         let width = ui.available_width().min(900.0);
         let keep = [self.set.start, self.set.goal];
         let (painter, view) = self.floor(ui, vec2(width, 320.0), Grabs::StartAndGoal, &keep);
-        self.draw_ends(ui, &painter, &view, true);
-        let t = match self.run.clone() {
-            Some(Ok(t)) => t,
-            Some(Err(e)) => {
+        let Some(run) = self.run.clone() else {
+            self.draw_ends(ui, &painter, &view, true, None);
+            return;
+        };
+        let t = match run {
+            Ok(t) => t,
+            Err(e) => {
+                self.draw_ends(ui, &painter, &view, true, None);
                 ui.label(RichText::new(e).color(theme::warn_color(ui)));
                 return;
             }
-            None => return,
         };
         let accent = theme::accent(ui);
         field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
@@ -36,9 +39,12 @@ impl Playground {
         {
             field::robot(&painter, &view, &s.pose, ghost);
         }
-        if let Some(s) = field::at_time(&t.samples, self.cursor) {
-            field::robot(&painter, &view, &s.pose, accent);
+        let now = field::at_time(&t.samples, self.cursor).map(|s| s.pose);
+        if let Some(pose) = &now {
+            field::robot(&painter, &view, pose, accent);
         }
+        // Start and goal over the run, their names clear of the robot.
+        self.draw_ends(ui, &painter, &view, true, now.as_ref());
         ui.label(
             RichText::new("Drag the dots to move start and goal, the rings to turn them.").small(),
         );
@@ -121,7 +127,7 @@ impl Playground {
                 field::pose(&painter, &mut marks, &view, &s.pose, faint, "", false);
             }
         }
-        self.draw_ends(ui, &painter, &view, false);
+        self.draw_ends(ui, &painter, &view, false, None);
         let reached = runs.iter().filter(|t| t.reached).count();
         let slowest = runs
             .iter()
