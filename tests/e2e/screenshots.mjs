@@ -14,7 +14,7 @@ await page.goto(`${server.url}#dev`);
 await waitForLab(page);
 const pages = await page.evaluate(async () => {
   const { lessons } = await import("./pkg/kinolab_js.js").then(async (m) => { await m.default(); return m; });
-  return lessons().map((l) => l.address);
+  return lessons().units.flatMap((u) => u.lessons).map((l) => l.address);
 });
 // ONLY=<prefix> limits the run to the pages whose address starts with it.
 const only = process.env.ONLY;

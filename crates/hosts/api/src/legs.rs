@@ -1,0 +1,76 @@
+//! Legs: how many leg-event sequences a walker has, whether a stance is
+//! statically stable, a gait through its cycle, and oscillators settling
+//! into a gait.
+
+use kinolab_locomotion::{Cpg, Gait, report};
+
+use crate::source::unknown;
+use crate::{Error, Files, Operation, Source};
+
+/// `kinolab leg-events`: N = (2k − 1)!, exact as a decimal string.
+#[derive(Debug, Clone, Copy)]
+pub struct LegEvents {
+    pub legs: u32,
+}
+
+impl Operation for LegEvents {
+    type Report = report::LegEventsReport;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        report::leg_events(self.legs).map_err(|e| Error::argument("legs", e.message))
+    }
+}
+
+/// `kinolab stability`: the support polygon, the margin and the nearest
+/// edge point for a centre of mass and the feet on the ground.
+#[derive(Debug, Clone)]
+pub struct Stability {
+    pub com: [f64; 2],
+    pub feet: Vec<[f64; 2]>,
+}
+
+impl Operation for Stability {
+    type Report = report::StabilityReport;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        report::stability(self.com, &self.feet)
+            .map_err(|e| Error::argument(e.field.clone(), e.message))
+    }
+}
+
+/// A gait: a gait file's text, or a named gait (`catalogue:hexapod-tripod`).
+pub fn gait(source: &Source) -> Result<Gait, Error> {
+    source.load("gait", "catalogue:", Gait::from_json, |id| {
+        kinolab_locomotion::named(id).ok_or_else(|| {
+            let known: Vec<&str> = kinolab_locomotion::named_ids().collect();
+            unknown("gait", id, &known)
+        })
+    })
+}
+
+/// `kinolab gait`: the cycle at `samples` instants τ = (k + ½)/N.
+#[derive(Debug, Clone)]
+pub struct GaitCycle {
+    pub gait: Source,
+    pub samples: usize,
+}
+
+impl Operation for GaitCycle {
+    type Report = report::GaitReport;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        report::gait(&gait(&self.gait)?, self.samples)
+            .map_err(Error::argument_or_input(&["samples"], "gait"))
+    }
+}
+
+/// `kinolab cpg`: where coupled phase oscillators end and whether they lock.
+#[derive(Debug, Clone)]
+pub struct Oscillators {
+    pub cpg: Source,
+}
+
+impl Operation for Oscillators {
+    type Report = report::CpgReport;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        let cpg = self.cpg.file_only("cpg", "a CPG file", Cpg::from_json)?;
+        report::cpg(&cpg).map_err(|e| Error::input("cpg", e))
+    }
+}

@@ -1,0 +1,204 @@
+//! `kinolab mechanisms`, `describe`, `home-state`, `fk`, `ik`, `place`,
+//! `jacobian` and `collide`: mechanism models (`*.model.json`, see the
+//! contract) or catalogue mechanisms, at the joint values given.
+
+use std::path::{Path, PathBuf};
+
+use clap::Subcommand;
+use kinolab_api::mechanism::{self, Ik, ObstacleSpec, On, Query};
+use serde_json::Value;
+
+use crate::Failure;
+use crate::args::{fixed, numbers};
+use crate::ask::{ask, source};
+
+#[derive(Debug, Subcommand)]
+pub(crate) enum Command {
+    /// List the catalogue mechanisms.
+    Mechanisms,
+    /// A model's structure: joints, bodies, frames, couplings, loops, shapes and solvers.
+    Describe {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+    },
+    /// A model's home state: zero clamped into the limits, followers set, loops closed.
+    HomeState {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+    },
+    /// Forward kinematics of a model file: the 4×4 pose of a frame (default: the tool).
+    Fk {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        #[command(flatten)]
+        q: Joints,
+        /// A frame name: a joint's, `base`, `world` or `tool`.
+        #[arg(long)]
+        frame: Option<String>,
+    },
+    /// Inverse kinematics of a model file: joint values that put a frame at a target.
+    Ik {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        /// Target position, m: X,Y,Z
+        #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+        position: Option<String>,
+        /// Target rotation, row-major: R11,...,R33 (position only when omitted)
+        #[arg(long, value_name = "R11,...,R33", allow_hyphen_values = true)]
+        rotation: Option<String>,
+        /// Starting joint values: Q1,...,QN (default: the home state)
+        #[arg(long, value_name = "Q1,...,QN", allow_hyphen_values = true)]
+        seed: Option<String>,
+        /// The frame to place (default: the tool).
+        #[arg(long)]
+        frame: Option<String>,
+        /// Give the target in this frame instead of the world.
+        #[arg(long)]
+        relative_to: Option<String>,
+        /// Most iterations per start (at most 1000).
+        #[arg(long)]
+        max_iterations: Option<usize>,
+        /// Most restarts from other seeds (at most 200).
+        #[arg(long)]
+        restarts: Option<usize>,
+    },
+    /// Every body's frame at the given joint values.
+    Place {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        #[command(flatten)]
+        q: Joints,
+    },
+    /// The 6 × dof geometric Jacobian of a frame (default: the tool).
+    Jacobian {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        #[command(flatten)]
+        q: Joints,
+        /// A frame name (default `tool`).
+        #[arg(long)]
+        frame: Option<String>,
+    },
+    /// Colliding body pairs and the clearance in a view plane, among the bodies and against obstacles.
+    Collide {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: PathBuf,
+        #[command(flatten)]
+        q: Joints,
+        /// The view plane: `plan` (x–y) or `side` (x–z).
+        #[arg(long, default_value = "side")]
+        plane: String,
+        /// An obstacle, repeatable: `circle:X,Y,R` or `rect:X,Y,HALF_W,HALF_H`.
+        #[arg(long, allow_hyphen_values = true)]
+        obstacle: Vec<String>,
+    },
+}
+
+/// Joint values for a model.
+#[derive(Debug, clap::Args)]
+pub(crate) struct Joints {
+    /// Joint values, rad (revolute) or m (prismatic): Q1,...,QN (none for a model without joints)
+    #[arg(
+        long,
+        value_name = "Q1,...,QN",
+        allow_hyphen_values = true,
+        default_value = ""
+    )]
+    q: String,
+}
+
+impl Joints {
+    fn values(&self) -> Result<Vec<f64>, Failure> {
+        numbers("q", &self.q)
+    }
+}
+
+pub(crate) fn run(command: Command) -> Result<Value, Failure> {
+    match command {
+        Command::Mechanisms => ask(&mechanism::Mechanisms, None),
+        Command::Describe { model } => on(&model, mechanism::Describe),
+        Command::HomeState { model } => on(&model, mechanism::HomeState),
+        Command::Fk { model, q, frame } => on(
+            &model,
+            mechanism::Fk {
+                q: q.values()?,
+                frame,
+            },
+        ),
+        Command::Place { model, q } => on(&model, mechanism::Place { q: q.values()? }),
+        Command::Jacobian { model, q, frame } => on(
+            &model,
+            mechanism::Jacobian {
+                q: q.values()?,
+                frame,
+            },
+        ),
+        Command::Collide {
+            model,
+            q,
+            plane,
+            obstacle,
+        } => on(
+            &model,
+            mechanism::Collide {
+                q: q.values()?,
+                plane,
+                obstacles: obstacle
+                    .iter()
+                    .map(|o| obstacle_spec(o))
+                    .collect::<Result<_, _>>()?,
+            },
+        ),
+        Command::Ik {
+            model,
+            position,
+            rotation,
+            seed,
+            frame,
+            relative_to,
+            max_iterations,
+            restarts,
+        } => {
+            let ik = Ik {
+                frame,
+                position: position
+                    .map(|p| fixed("position", "X,Y,Z", &p))
+                    .transpose()?,
+                rotation: rotation
+                    .map(|r| fixed("rotation", "R11,...,R33 (row-major)", &r))
+                    .transpose()?,
+                relative_to,
+                seed: seed.map(|s| numbers("seed", &s)).transpose()?,
+                max_iterations,
+                restarts,
+            };
+            on(&model, ik)
+        }
+    }
+}
+
+/// Ask `query` about the model in the file (or catalogue entry) `model`.
+fn on<Q: Query>(model: &Path, query: Q) -> Result<Value, Failure> {
+    let on = On {
+        model: source(model)?,
+        query,
+    };
+    ask(&on, Some(model))
+}
+
+/// `circle:X,Y,R` or `rect:X,Y,HALF_W,HALF_H`.
+fn obstacle_spec(text: &str) -> Result<ObstacleSpec, Failure> {
+    match text.split_once(':') {
+        Some(("circle", numbers)) => Ok(ObstacleSpec {
+            circle: Some(fixed("obstacle", "X,Y,R for a circle", numbers)?),
+            rect: None,
+        }),
+        Some(("rect", numbers)) => Ok(ObstacleSpec {
+            circle: None,
+            rect: Some(fixed("obstacle", "X,Y,HALF_W,HALF_H for a rect", numbers)?),
+        }),
+        _ => Err(Failure(format!(
+            "--obstacle: `{text}` is not `circle:X,Y,R` or `rect:X,Y,HALF_W,HALF_H`"
+        ))),
+    }
+}

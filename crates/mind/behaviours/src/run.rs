@@ -1,0 +1,399 @@
+//! A run: a world, a robot with sensors, behaviours and a coordinator,
+//! stepped for a duration from a seed. The same file and seed always give
+//! the same run, so a link, a test and a graded exercise see one result.
+
+use kinolab_common::error::{from_json, in_range, positive};
+use kinolab_common::trajectory::Sample as Motion;
+use kinolab_world::sensors::{LightSensors, Percepts, Rays};
+use kinolab_world::{Body, Event, EventKind, Sensors, Sim, World};
+use serde::{Deserialize, Serialize};
+
+use crate::coordinate::{Coordinator, Decision, Memory, Responses, decide};
+use crate::{Drive, FieldError, Named, Response};
+
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a behaviour run file (an object with `world`, `behaviours` and `coordinator`)"
+)]
+struct RunFile {
+    /// An example world's id, or a world file's contents.
+    world: serde_json::Value,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    robot: Option<serde_json::Value>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    sensors: Option<Sensors>,
+    behaviours: Vec<Named>,
+    coordinator: Coordinator,
+    #[serde(default = "kinolab_common::defaults::whole::<DURATION_S>")]
+    duration: f64,
+    #[serde(default = "kinolab_common::defaults::reciprocal::<STEPS_PER_S>")]
+    dt: f64,
+    #[serde(default)]
+    seed: u64,
+    #[serde(default = "default_heading_gain")]
+    heading_gain: f64,
+    #[serde(default = "yes")]
+    stop_at_goal: bool,
+    #[serde(default = "kinolab_common::defaults::one")]
+    output_every: usize,
+}
+
+fn default_heading_gain() -> f64 {
+    3.0
+}
+fn yes() -> bool {
+    true
+}
+
+/// The longest run, s, and the most steps one may take.
+pub const MAX_DURATION: f64 = 3600.0;
+pub const MAX_STEPS: f64 = 200_000.0;
+
+/// Everything a run needs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Setup {
+    pub world: World,
+    pub body: Body,
+    pub sensors: Sensors,
+    pub behaviours: Vec<Named>,
+    pub coordinator: Coordinator,
+    pub duration: f64,
+    pub dt: f64,
+    pub seed: u64,
+    /// k of the heading controller that steers towards vectors, 1/s.
+    pub heading_gain: f64,
+    pub stop_at_goal: bool,
+    /// Keep one sample in this many steps.
+    pub output_every: usize,
+}
+
+/// The sensors a robot carries unless a run says otherwise: 16 rays over
+/// 240°, 2 m long, and two light sensors.
+pub fn default_sensors() -> Sensors {
+    Sensors {
+        rays: Some(Rays {
+            count: 16,
+            fov_deg: 240.0,
+            max_range: 2.0,
+            noise: 0.0,
+        }),
+        lights: Some(LightSensors::default()),
+        ..Sensors::default()
+    }
+}
+
+/// A run's length when its file does not say, s.
+const DURATION_S: u32 = 30;
+/// Steps a second when the file does not give `dt`.
+const STEPS_PER_S: u32 = 20;
+
+impl Setup {
+    /// A run of `behaviours` under `coordinator` in `world` with the
+    /// default robot and sensors, 30 s at 20 steps a second, seed 0.
+    pub fn new(world: World, behaviours: Vec<Named>, coordinator: Coordinator) -> Self {
+        Self {
+            world,
+            body: Body::default(),
+            sensors: default_sensors(),
+            behaviours,
+            coordinator,
+            duration: kinolab_common::defaults::whole::<DURATION_S>(),
+            dt: kinolab_common::defaults::reciprocal::<STEPS_PER_S>(),
+            seed: 0,
+            heading_gain: default_heading_gain(),
+            stop_at_goal: true,
+            output_every: 1,
+        }
+    }
+
+    /// Read a run file. Errors name the JSON path of the bad field.
+    pub fn from_json(text: &str) -> Result<Self, FieldError> {
+        let file: RunFile = from_json(text)?;
+        let world = match &file.world {
+            serde_json::Value::String(id) => kinolab_world::catalogue::world(id)?,
+            other => World::from_value(other.clone()).map_err(|e| e.within("world"))?,
+        };
+        let body = match file.robot {
+            Some(v) => Body::from_value(v).map_err(|e| e.within("robot"))?,
+            None => Body::default(),
+        };
+        let setup = Setup {
+            world,
+            body,
+            sensors: file.sensors.unwrap_or_else(default_sensors),
+            behaviours: file.behaviours,
+            coordinator: file.coordinator,
+            duration: file.duration,
+            dt: file.dt,
+            seed: file.seed,
+            heading_gain: file.heading_gain,
+            stop_at_goal: file.stop_at_goal,
+            output_every: file.output_every,
+        };
+        setup.check()?;
+        Ok(setup)
+    }
+
+    /// The run file for this set-up.
+    pub fn to_json(&self) -> String {
+        let world: serde_json::Value =
+            serde_json::from_str(&self.world.to_json()).unwrap_or_default();
+        let file = RunFile {
+            world,
+            robot: Some(self.body.to_value()),
+            sensors: Some(self.sensors),
+            behaviours: self.behaviours.clone(),
+            coordinator: self.coordinator.clone(),
+            duration: self.duration,
+            dt: self.dt,
+            seed: self.seed,
+            heading_gain: self.heading_gain,
+            stop_at_goal: self.stop_at_goal,
+            output_every: self.output_every,
+        };
+        serde_json::to_string_pretty(&file).unwrap_or_default()
+    }
+
+    /// Check every number and name; errors name the field.
+    pub fn check(&self) -> Result<(), FieldError> {
+        in_range("duration", self.duration, 0.0, MAX_DURATION)?;
+        in_range("dt", self.dt, 1e-3, 0.5)?;
+        if self.duration / self.dt > MAX_STEPS {
+            return Err(FieldError::new(
+                "dt",
+                format!(
+                    "{} s at {} s a step is more than {MAX_STEPS} steps",
+                    self.duration, self.dt
+                ),
+            ));
+        }
+        positive("heading_gain", self.heading_gain)?;
+        if self.output_every == 0 {
+            return Err(FieldError::new("output_every", "must be at least 1"));
+        }
+        self.sensors.check().map_err(|e| e.within("sensors"))?;
+        let mut names = Vec::new();
+        for (i, b) in self.behaviours.iter().enumerate() {
+            b.check()
+                .map_err(|e| e.within(&format!("behaviours[{i}]")))?;
+            if names.contains(&b.name) {
+                return Err(FieldError::new(
+                    format!("behaviours[{i}].name"),
+                    format!("`{}` is used twice", b.name),
+                ));
+            }
+            if matches!(b.behaviour, crate::Behaviour::Braitenberg(_)) && self.body.holonomic() {
+                return Err(FieldError::new(
+                    format!("behaviours[{i}]"),
+                    "a Braitenberg vehicle needs a differential robot",
+                ));
+            }
+            names.push(b.name.clone());
+        }
+        self.coordinator
+            .check(&names)
+            .map_err(|e| e.within("coordinator"))
+    }
+}
+
+/// Everything one step produced, for drawing and for the report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    pub percepts: Percepts,
+    /// Each behaviour's response (`None`: its releaser was off).
+    pub responses: Vec<Option<Response>>,
+    pub decision: Decision,
+    /// The command the body actually drove (after its limits).
+    pub driven: kinolab_world::Command,
+    pub events: Vec<Event>,
+    /// The pose after the step.
+    pub pose: kinolab_world::Pose,
+    pub clearance: f64,
+}
+
+/// A run in progress.
+#[derive(Debug, Clone)]
+pub struct Runner {
+    pub sim: Sim,
+    pub behaviours: Vec<Named>,
+    pub coordinator: Coordinator,
+    pub drive: Drive,
+    memory: Memory,
+    pub duration: f64,
+    pub stop_at_goal: bool,
+}
+
+impl Runner {
+    pub fn new(setup: &Setup) -> Result<Self, FieldError> {
+        setup.check()?;
+        let sim = Sim::new(
+            setup.world.clone(),
+            setup.body.clone(),
+            setup.sensors,
+            setup.dt,
+            setup.seed,
+        )?;
+        let mut behaviours = setup.behaviours.clone();
+        behaviours.iter_mut().for_each(Named::reset);
+        Ok(Self {
+            sim,
+            behaviours,
+            memory: Memory::new(&setup.coordinator),
+            coordinator: setup.coordinator.clone(),
+            drive: Drive {
+                body: setup.body.clone(),
+                heading_gain: setup.heading_gain,
+            },
+            duration: setup.duration,
+            stop_at_goal: setup.stop_at_goal,
+        })
+    }
+
+    /// Whether the run is over: out of time, or at the goal when it should
+    /// stop there.
+    pub fn done(&self) -> bool {
+        self.sim.time >= self.duration - 1e-9 || (self.stop_at_goal && self.sim.goal_reached)
+    }
+
+    /// Sense, let every behaviour respond, coordinate, and move.
+    pub fn step(&mut self) -> Frame {
+        let percepts = self.sim.sense();
+        let responses: Vec<Option<Response>> = self
+            .behaviours
+            .iter_mut()
+            .map(|b| b.respond(&percepts))
+            .collect();
+        let decision = decide(
+            &self.coordinator,
+            &mut self.memory,
+            &Responses {
+                behaviours: &self.behaviours,
+                responses: &responses,
+            },
+            &percepts,
+            &self.drive,
+            self.sim.dt,
+        );
+        let step = self.sim.advance(decision.command);
+        Frame {
+            percepts,
+            responses,
+            decision,
+            driven: step.driven,
+            events: step.events,
+            pose: self.sim.pose,
+            clearance: step.clearance,
+        }
+    }
+
+    /// The name of behaviour `i`.
+    pub fn name(&self, i: usize) -> &str {
+        self.behaviours.get(i).map_or("", |b| b.name.as_str())
+    }
+}
+
+/// One kept sample of the trajectory.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Sample {
+    #[serde(flatten)]
+    pub motion: Motion,
+    /// The behaviour in control during the step that ended here.
+    pub control: Option<String>,
+}
+
+/// A stretch of time during which one behaviour had control.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Stretch {
+    pub from: f64,
+    pub to: f64,
+    pub behaviour: Option<String>,
+}
+
+/// How the run went.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Metrics {
+    pub reached: bool,
+    /// When the goal was reached, s.
+    pub time: Option<f64>,
+    pub path_length: f64,
+    /// The smallest gap between the robot and anything, m.
+    pub min_clearance: f64,
+    /// Times the robot touched something.
+    pub collisions: usize,
+}
+
+/// What `kinolab run` prints.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunReport {
+    pub samples: Vec<Sample>,
+    pub control: Vec<Stretch>,
+    pub events: Vec<Event>,
+    pub metrics: Metrics,
+}
+
+/// Run `setup` to the end.
+pub fn run(setup: &Setup) -> Result<RunReport, FieldError> {
+    let mut runner = Runner::new(setup)?;
+    let start = runner.sim.pose;
+    let mut samples = vec![Sample {
+        motion: Motion::new(0.0, [start.x, start.y, start.theta], 0.0, 0.0),
+        control: None,
+    }];
+    let mut control: Vec<Stretch> = Vec::new();
+    let mut events = Vec::new();
+    let mut metrics = Metrics {
+        reached: false,
+        time: None,
+        path_length: 0.0,
+        min_clearance: runner.sim.clearance(),
+        collisions: 0,
+    };
+    let mut k = 0;
+    while !runner.done() {
+        let before = runner.sim.position();
+        let t0 = runner.sim.time;
+        let frame = runner.step();
+        k += 1;
+        let who = frame.decision.in_control.map(|i| runner.name(i).to_owned());
+        match control.last_mut() {
+            Some(last) if last.behaviour == who => last.to = runner.sim.time,
+            _ => control.push(Stretch {
+                from: t0,
+                to: runner.sim.time,
+                behaviour: who.clone(),
+            }),
+        }
+        metrics.path_length += (runner.sim.position() - before).norm();
+        metrics.min_clearance = metrics.min_clearance.min(frame.clearance);
+        for e in &frame.events {
+            match e.kind {
+                EventKind::Bump { .. } => metrics.collisions += 1,
+                EventKind::GoalReached => {
+                    metrics.reached = true;
+                    metrics.time = Some(e.t);
+                }
+                EventKind::Appeared { .. } => {}
+            }
+        }
+        events.extend(frame.events);
+        if k % setup.output_every == 0 || runner.done() {
+            let p = frame.pose;
+            samples.push(Sample {
+                motion: Motion::new(
+                    runner.sim.time,
+                    [p.x, p.y, p.theta],
+                    frame.driven.vx,
+                    frame.driven.omega,
+                ),
+                control: who,
+            });
+        }
+    }
+    Ok(RunReport {
+        samples,
+        control,
+        events,
+        metrics,
+    })
+}

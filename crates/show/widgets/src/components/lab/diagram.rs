@@ -1,0 +1,426 @@
+//! The component diagram: boxes in columns (servers to the left of their
+//! clients), services as squares on a box's right edge, client ports as
+//! circles on its left edge, a wire from each port to its service, and
+//! tokens moving along the wires. Drag a port onto a service to wire it;
+//! click a port to select it. With a world, the robot is drawn beside it.
+
+use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, pos2, vec2};
+use kinolab_components::view::ComponentView;
+use kinolab_components::{Action, Record};
+
+use super::ComponentLab;
+use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
+use crate::draw::PlaneView;
+
+const LINE: f32 = 15.0;
+const HEADER: f32 = 30.0;
+const GAP: f32 = 14.0;
+/// A press this close (points) to an anchor grabs it.
+const GRAB: f32 = 10.0;
+
+/// A colour per pattern, readable in both themes.
+pub fn pattern_colour(pattern: &str) -> Color32 {
+    match pattern {
+        "send" => Color32::from_rgb(230, 120, 40),
+        "query" => Color32::from_rgb(70, 140, 230),
+        "push-newest" => Color32::from_rgb(60, 170, 90),
+        "push-timed" => Color32::from_rgb(40, 160, 160),
+        "event" => Color32::from_rgb(200, 70, 170),
+        "wiring" => Color32::from_rgb(150, 150, 40),
+        _ => Color32::GRAY,
+    }
+}
+
+/// Where each box goes: column = longest chain of servers behind it.
+pub fn columns(views: &[ComponentView]) -> Vec<usize> {
+    let index = |name: &str| views.iter().position(|c| c.name == name);
+    let mut col = vec![0usize; views.len()];
+    for _ in 0..views.len() {
+        let mut changed = false;
+        for (i, c) in views.iter().enumerate() {
+            let deepest = c
+                .ports
+                .iter()
+                .filter_map(|p| p.connected_to.as_deref())
+                .filter_map(|s| index(s.split('.').next().unwrap_or_default()))
+                .filter(|&j| j != i)
+                .map(|j| col[j] + 1)
+                .max()
+                .unwrap_or(0)
+                .min(views.len());
+            if deepest > col[i] {
+                col[i] = deepest;
+                changed = true;
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    col
+}
+
+/// Each box's rectangle inside `area` with the boxes in columns `col`,
+/// and the height the layout needs.
+fn boxes(views: &[ComponentView], col: &[usize], area: Rect) -> (Vec<Rect>, f32) {
+    let ncols = col.iter().max().map_or(1, |m| m + 1);
+    let width = ((area.width() - GAP * (ncols as f32 + 1.0)) / ncols as f32).clamp(70.0, 190.0);
+    let mut heights = vec![GAP; ncols];
+    let mut rects = Vec::with_capacity(views.len());
+    for (i, c) in views.iter().enumerate() {
+        let h = HEADER + LINE * (c.services.len() + c.ports.len()) as f32 + 4.0;
+        let x = area.left() + GAP + col[i] as f32 * (width + GAP);
+        let y = area.top() + heights[col[i]];
+        rects.push(Rect::from_min_size(pos2(x, y), vec2(width, h)));
+        heights[col[i]] += h + GAP;
+    }
+    (rects, heights.into_iter().fold(0.0, f32::max))
+}
+
+fn service_anchor(r: Rect, i: usize) -> Pos2 {
+    pos2(r.right(), r.top() + HEADER + LINE * (i as f32 + 0.5))
+}
+
+fn port_anchor(r: Rect, services: usize, j: usize) -> Pos2 {
+    pos2(
+        r.left(),
+        r.top() + HEADER + LINE * ((services + j) as f32 + 0.5),
+    )
+}
+
+/// A point along the wire from `a` (a service) to `b` (a port).
+fn along(a: Pos2, b: Pos2, t: f32) -> Pos2 {
+    let d = ((b.x - a.x).abs() / 2.0).max(40.0);
+    let (p1, p2) = (a + vec2(d, 0.0), b - vec2(d, 0.0));
+    let u = 1.0 - t;
+    let w = [u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t];
+    pos2(
+        w[0] * a.x + w[1] * p1.x + w[2] * p2.x + w[3] * b.x,
+        w[0] * a.y + w[1] * p1.y + w[2] * p2.y + w[3] * b.y,
+    )
+}
+
+/// Every anchor by name: (`component.service`, point) and ports likewise.
+struct Anchors {
+    services: Vec<(String, Pos2)>,
+    ports: Vec<(String, Pos2)>,
+}
+
+impl Anchors {
+    fn new(views: &[ComponentView], rects: &[Rect]) -> Self {
+        let mut services = Vec::new();
+        let mut ports = Vec::new();
+        for (c, r) in views.iter().zip(rects) {
+            for (i, s) in c.services.iter().enumerate() {
+                services.push((format!("{}.{}", c.name, s.name), service_anchor(*r, i)));
+            }
+            for (j, p) in c.ports.iter().enumerate() {
+                ports.push((
+                    format!("{}.{}", c.name, p.name),
+                    port_anchor(*r, c.services.len(), j),
+                ));
+            }
+        }
+        Self { services, ports }
+    }
+
+    fn near(list: &[(String, Pos2)], at: Pos2) -> Option<&str> {
+        list.iter()
+            .filter(|(_, p)| p.distance(at) < GRAB)
+            .min_by(|a, b| a.1.distance(at).total_cmp(&b.1.distance(at)))
+            .map(|(n, _)| n.as_str())
+    }
+
+    fn service(&self, name: &str) -> Option<Pos2> {
+        self.services
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| *p)
+    }
+
+    fn port(&self, name: &str) -> Option<Pos2> {
+        self.ports.iter().find(|(n, _)| n == name).map(|(_, p)| *p)
+    }
+}
+
+/// Draw the diagram (and the world); returns a wiring the learner made.
+pub fn show(ui: &mut egui::Ui, lab: &mut ComponentLab) -> Option<Action> {
+    let (views, world) = {
+        let rt = lab.rt.as_ref()?;
+        (rt.view(), rt.world.is_some())
+    };
+    let width = ui.available_width();
+    let side = world && width >= 640.0;
+    let diagram_width = if side { width * 0.66 } else { width };
+    legend(ui);
+    // The layout of the system as it started, so rewiring moves wires,
+    // not boxes.
+    let col = if lab.columns.len() == views.len() {
+        lab.columns.clone()
+    } else {
+        columns(&views)
+    };
+    let (rects, height) = boxes(
+        &views,
+        &col,
+        Rect::from_min_size(Pos2::ZERO, vec2(diagram_width, 10.0)),
+    );
+    let mut action = None;
+    ui.horizontal_top(|ui| {
+        let (rect, response) = ui.allocate_exact_size(
+            vec2(diagram_width, height.max(120.0)),
+            Sense::click_and_drag(),
+        );
+        let rects: Vec<Rect> = rects
+            .iter()
+            .map(|r| r.translate(rect.min.to_vec2()))
+            .collect();
+        let anchors = Anchors::new(&views, &rects);
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        draw_wires(&painter, lab, &views, &anchors);
+        draw_boxes(ui, &painter, lab, &views, &rects);
+        if let Some(rt) = lab.rt.as_ref() {
+            draw_tokens(&painter, rt.trace(), rt.now(), &anchors);
+        }
+        action = interact(ui, &painter, lab, &response, &anchors);
+        if side {
+            draw_robot_world(
+                ui,
+                lab,
+                vec2(width - diagram_width - 8.0, height.max(220.0)),
+            );
+        }
+    });
+    if world && !side {
+        draw_robot_world(ui, lab, vec2(width, 220.0));
+    }
+    action
+}
+
+/// What each colour means.
+fn legend(ui: &mut egui::Ui) {
+    ui.horizontal_wrapped(|ui| {
+        for p in kinolab_components::exercise::CHOICES {
+            let (rect, _) = ui.allocate_exact_size(vec2(10.0, 10.0), Sense::hover());
+            ui.painter()
+                .circle_filled(rect.center(), 4.5, pattern_colour(p));
+            ui.label(egui::RichText::new(p).size(11.5));
+        }
+        ui.label(egui::RichText::new("■ service  ● port").size(11.5));
+    });
+}
+
+fn draw_boxes(
+    ui: &egui::Ui,
+    painter: &egui::Painter,
+    lab: &ComponentLab,
+    views: &[ComponentView],
+    rects: &[Rect],
+) {
+    let ink = ui.visuals().text_color();
+    let faint = ui.visuals().weak_text_color();
+    let small = FontId::proportional(11.0);
+    for (c, r) in views.iter().zip(rects) {
+        let fill = ui.visuals().window_fill;
+        let edge = if c.waiting_on.is_some() {
+            crate::theme::warn_color(ui)
+        } else {
+            faint
+        };
+        painter.rect(
+            *r,
+            5.0,
+            fill,
+            Stroke::new(1.2, edge),
+            egui::StrokeKind::Inside,
+        );
+        painter.text(
+            r.left_top() + vec2(6.0, 3.0),
+            Align2::LEFT_TOP,
+            &c.name,
+            FontId::proportional(12.5),
+            ink,
+        );
+        let mut state = match &c.waiting_on {
+            Some(p) => format!("blocked on {p}"),
+            None => c.state.name().to_owned(),
+        };
+        if c.master {
+            state += " · master";
+        }
+        painter.text(
+            r.left_top() + vec2(6.0, 17.0),
+            Align2::LEFT_TOP,
+            state,
+            FontId::proportional(10.0),
+            faint,
+        );
+        for (i, s) in c.services.iter().enumerate() {
+            let a = service_anchor(*r, i);
+            let colour = pattern_colour(s.pattern.name());
+            painter.rect_filled(Rect::from_center_size(a, vec2(9.0, 9.0)), 1.5, colour);
+            painter.text(
+                a - vec2(8.0, 0.0),
+                Align2::RIGHT_CENTER,
+                &s.name,
+                small.clone(),
+                ink,
+            );
+        }
+        for (j, p) in c.ports.iter().enumerate() {
+            let a = port_anchor(*r, c.services.len(), j);
+            let name = format!("{}.{}", c.name, p.name);
+            let colour = pattern_colour(p.pattern.name());
+            let selected = lab.selected.as_deref() == Some(name.as_str());
+            painter.circle(
+                a,
+                if selected { 6.0 } else { 4.5 },
+                colour,
+                Stroke::new(if selected { 2.0 } else { 0.0 }, ink),
+            );
+            let label = if p.blocking {
+                p.name.clone()
+            } else {
+                format!("{} (cancelled)", p.name)
+            };
+            painter.text(
+                a + vec2(8.0, 0.0),
+                Align2::LEFT_CENTER,
+                label,
+                small.clone(),
+                if p.connected_to.is_some() { ink } else { faint },
+            );
+        }
+    }
+}
+
+/// Wires, brighter where messages passed in the last tenth of the window.
+fn draw_wires(
+    painter: &egui::Painter,
+    lab: &ComponentLab,
+    views: &[ComponentView],
+    anchors: &Anchors,
+) {
+    let Some(rt) = lab.rt.as_ref() else { return };
+    let now = rt.now();
+    let recent = (lab.window * 0.1).max(0.05);
+    let trace = rt.trace();
+    let start = trace.partition_point(|r| r.sent < now - recent);
+    for c in views {
+        for p in &c.ports {
+            let Some(service) = &p.connected_to else {
+                continue;
+            };
+            let port = format!("{}.{}", c.name, p.name);
+            let (Some(a), Some(b)) = (anchors.service(service), anchors.port(&port)) else {
+                continue;
+            };
+            let busy = trace[start..].iter().any(|r| r.port == port);
+            let colour = pattern_colour(p.pattern.name());
+            let stroke = if busy {
+                Stroke::new(3.0, colour)
+            } else {
+                Stroke::new(1.5, colour.gamma_multiply(0.55))
+            };
+            let points: Vec<Pos2> = (0..=24).map(|k| along(a, b, k as f32 / 24.0)).collect();
+            painter.add(egui::Shape::line(points, stroke));
+        }
+    }
+}
+
+/// Messages on their way, as dots moving along their wires; lost ones as
+/// a red cross where they vanished.
+fn draw_tokens(painter: &egui::Painter, trace: &[Record], now: f64, anchors: &Anchors) {
+    let start = trace.partition_point(|r| r.sent < now - 2.0);
+    for r in &trace[start..] {
+        if r.sent > now || matches!(r.pattern, "wiring" | "state" | "note") {
+            continue;
+        }
+        let (Some(a), Some(b)) = (anchors.service(&r.service), anchors.port(&r.port)) else {
+            continue;
+        };
+        let upstream = matches!(
+            r.kind,
+            "command" | "request" | "subscribe" | "unsubscribe" | "activate" | "deactivate"
+        );
+        let colour = pattern_colour(r.pattern);
+        match r.delivered {
+            Some(d) if d > now && d > r.sent => {
+                let f = ((now - r.sent) / (d - r.sent)) as f32;
+                let t = if upstream { 1.0 - f } else { f };
+                painter.circle_filled(along(a, b, t), 4.5, colour);
+            }
+            None if r.status == kinolab_components::Status::Lost && now - r.sent < 0.3 => {
+                let at = along(a, b, 0.5);
+                let red = Color32::from_rgb(220, 50, 50);
+                painter.line_segment(
+                    [at - vec2(5.0, 5.0), at + vec2(5.0, 5.0)],
+                    Stroke::new(2.0, red),
+                );
+                painter.line_segment(
+                    [at - vec2(5.0, -5.0), at + vec2(5.0, -5.0)],
+                    Stroke::new(2.0, red),
+                );
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Select a port by clicking it; wire it by dragging it onto a service.
+fn interact(
+    ui: &egui::Ui,
+    painter: &egui::Painter,
+    lab: &mut ComponentLab,
+    response: &egui::Response,
+    anchors: &Anchors,
+) -> Option<Action> {
+    if response.drag_started()
+        && let Some(at) = response.interact_pointer_pos()
+        && let Some(port) = Anchors::near(&anchors.ports, at)
+    {
+        lab.dragging = Some(port.to_owned());
+        lab.selected = Some(port.to_owned());
+    }
+    if let (Some(port), Some(at)) = (&lab.dragging, response.interact_pointer_pos())
+        && let Some(from) = anchors.port(port)
+    {
+        painter.line_segment([from, at], Stroke::new(2.0, ui.visuals().text_color()));
+    }
+    if response.drag_stopped() {
+        let port = lab.dragging.take()?;
+        let at = response.interact_pointer_pos()?;
+        let service = Anchors::near(&anchors.services, at)?;
+        return Some(Action::Connect {
+            port,
+            service: service.to_owned(),
+        });
+    }
+    if response.clicked()
+        && let Some(at) = response.interact_pointer_pos()
+    {
+        lab.selected = Anchors::near(&anchors.ports, at).map(str::to_owned);
+    }
+    None
+}
+
+fn draw_robot_world(ui: &mut egui::Ui, lab: &ComponentLab, size: egui::Vec2) {
+    let Some(sim) = lab.rt.as_ref().and_then(|rt| rt.world.as_ref()) else {
+        return;
+    };
+    let (rect, _) = ui.allocate_exact_size(size, Sense::hover());
+    let b = sim.world.bounds;
+    let view = PlaneView::fit(rect.shrink(6.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
+    let painter = ui.painter_at(rect);
+    draw_world(ui, &painter, &view, &sim.world, sim.time);
+    let colour = pattern_colour("query");
+    draw_trail(
+        &painter,
+        &view,
+        lab.track.iter().map(|(_, p)| [p.x, p.y]),
+        colour,
+    );
+    let ink = ui.visuals().text_color();
+    draw_robot(&painter, &view, &sim.pose, sim.body.radius(), colour, ink);
+}
