@@ -262,25 +262,12 @@ impl Arena {
     /// starts walking now, the goal moves now).
     pub fn spring(&mut self, surprise: &Surprise) -> Result<(), FieldError> {
         let now = self.time();
-        let surprise = match surprise {
-            Surprise::Door { from, to, .. } => Surprise::Door {
-                from: *from,
-                to: *to,
-                at: now,
-            },
-            Surprise::Goal { to, .. } => Surprise::Goal { to: *to, at: now },
-            other => other.clone(),
-        };
+        let surprise = surprise.clone().at(now);
         for e in &mut self.entrants {
             surprise.check("surprise", &e.sim.world)?;
             let mut world = e.sim.world.clone();
             let mut sensors = e.sim.sensors;
             surprise.apply(&mut world, &mut sensors);
-            if let Surprise::Person { .. } = surprise
-                && let Some(o) = world.obstacles.last_mut()
-            {
-                o.appear_at = now;
-            }
             e.sim.world = world;
             e.sim.sensors = sensors;
         }

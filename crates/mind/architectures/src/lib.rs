@@ -6,7 +6,8 @@
 //! - [`skills`]: a reactive behaviour stack (avoid over go-to-goal);
 //! - [`paradigm`]: the hierarchical, reactive and hybrid controllers;
 //! - [`surprise`]: a door that closes, a person, a wrong map, noise, a
-//!   goal that moves, glass;
+//!   goal that moves, glass; [`placing`]: the first three placed from any
+//!   world's geometry;
 //! - [`arena`]: robots of each kind on one clock in copies of one world,
 //!   with their scores; [`run`]: one robot's run as the CLI prints it;
 //! - [`routes`]: sensing routes, and the paradigm a wiring amounts to;
@@ -17,6 +18,7 @@ pub mod exercise;
 pub mod follow;
 pub mod map;
 pub mod paradigm;
+pub mod placing;
 pub mod planner;
 pub mod routes;
 pub mod run;

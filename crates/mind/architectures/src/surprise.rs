@@ -18,11 +18,13 @@ pub enum Surprise {
         to: [f64; 2],
         at: f64,
     },
-    /// A person steps in: walks from `from` to `to` at `speed` and stands there.
+    /// A person steps in at time `at`: walks from `from` to `to` at `speed`
+    /// and stands there.
     Person {
         from: [f64; 2],
         to: [f64; 2],
         speed: f64,
+        at: f64,
     },
     /// The map the robots are given lacks these obstacles.
     WrongMap { missing: Vec<usize> },
@@ -73,8 +75,9 @@ fn numbers(field: &str, text: &str, count: usize) -> Result<Vec<f64>, FieldError
     Ok(values)
 }
 
+/// `body@number`, split at the last `@`.
 fn split_at(field: &str, text: &str) -> Result<(String, f64), FieldError> {
-    let (body, at) = text.split_once('@').ok_or_else(|| {
+    let (body, at) = text.rsplit_once('@').ok_or_else(|| {
         FieldError::new(field, format!("`{text}` needs `@` and a number after it"))
     })?;
     let at = numbers(field, at, 1)?[0];
@@ -102,12 +105,18 @@ impl Surprise {
                 }
             }
             "person" => {
-                let (body, speed) = split_at(field, rest)?;
+                // `…@SPEED` or `…@SPEED@T`: the time they step in, 0 when left out.
+                let (body, last) = split_at(field, rest)?;
+                let (body, speed, at) = match split_at(field, &body) {
+                    Ok((body, speed)) => (body, speed, last),
+                    Err(_) => (body, last, 0.0),
+                };
                 let v = numbers(field, &body, 4)?;
                 Surprise::Person {
                     from: pair(&v, 0),
                     to: pair(&v, 2),
                     speed: in_range(field, speed, 0.01, 5.0)?,
+                    at: in_range(field, at, 0.0, 3600.0)?,
                 }
             }
             "wrong-map" => Surprise::WrongMap {
@@ -149,6 +158,62 @@ impl Surprise {
                 ));
             }
         })
+    }
+
+    /// The same surprise happening at `t` (a door closing, a person
+    /// stepping in, the goal moving); the others have no time.
+    pub fn at(self, t: f64) -> Self {
+        match self {
+            Surprise::Door { from, to, .. } => Surprise::Door { from, to, at: t },
+            Surprise::Person {
+                from, to, speed, ..
+            } => Surprise::Person {
+                from,
+                to,
+                speed,
+                at: t,
+            },
+            Surprise::Goal { to, .. } => Surprise::Goal { to, at: t },
+            other => other,
+        }
+    }
+
+    /// The surprise as the command line writes it (`door:5,1,5,2@6`);
+    /// [`Surprise::parse`] reads it back.
+    pub fn spec(&self) -> String {
+        let list = |v: &[f64]| {
+            v.iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(",")
+        };
+        match self {
+            Surprise::Door { from, to, at } => {
+                format!("door:{}@{at}", list(&[from[0], from[1], to[0], to[1]]))
+            }
+            Surprise::Person {
+                from,
+                to,
+                speed,
+                at,
+            } => format!(
+                "person:{}@{speed}@{at}",
+                list(&[from[0], from[1], to[0], to[1]])
+            ),
+            Surprise::WrongMap { missing } => format!(
+                "wrong-map:{}",
+                missing
+                    .iter()
+                    .map(usize::to_string)
+                    .collect::<Vec<_>>()
+                    .join(",")
+            ),
+            Surprise::Noise { sd } => format!("noise:{sd}"),
+            Surprise::Goal { to, at } => format!("goal:{}@{at}", list(to)),
+            Surprise::Glass { from, to } => {
+                format!("glass:{}", list(&[from[0], from[1], to[0], to[1]]))
+            }
+        }
     }
 
     /// Check the surprise against `world`: points inside, obstacles that exist.
@@ -200,12 +265,18 @@ impl Surprise {
                 })
                 .appearing_at(*at),
             ),
-            Surprise::Person { from, to, speed } => world.obstacles.push(
+            Surprise::Person {
+                from,
+                to,
+                speed,
+                at,
+            } => world.obstacles.push(
                 Obstacle::new(Shape::Disc {
                     centre: v(*from),
                     radius: PERSON_RADIUS,
                 })
-                .moving(Script::new(vec![v(*from), v(*to)], *speed, Repeat::Once)),
+                .moving(Script::new(vec![v(*from), v(*to)], *speed, Repeat::Once))
+                .appearing_at(*at),
             ),
             Surprise::Glass { from, to } => {
                 world.obstacles.push(

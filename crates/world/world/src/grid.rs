@@ -125,6 +125,11 @@ impl Grid {
         j * self.nx + i
     }
 
+    /// The cell whose entry is at `index` in [`Grid::distances_to`]'s list.
+    pub fn cell_at(&self, index: usize) -> Cell {
+        (index % self.nx, index / self.nx)
+    }
+
     /// The moves from `c`: each free neighbour and the step's length.
     pub fn moves(&self, c: Cell) -> impl Iterator<Item = (Cell, f64)> + '_ {
         STEPS.iter().filter_map(move |&(di, dj)| {
