@@ -92,9 +92,9 @@ impl Operation for CheckLesson {
 pub struct Widgets;
 
 impl Operation for Widgets {
-    type Report = &'static [kinolab_schema::WidgetSchema];
+    type Report = Vec<&'static kinolab_schema::WidgetSchema>;
     fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        Ok(kinolab_schema::WIDGETS)
+        Ok(kinolab_schema::widgets().collect())
     }
 }
 

@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use egui::RichText;
 use kinolab_lessons::WidgetSpec;
-use kinolab_schema::{Kind, Param, WIDGETS, WidgetSchema};
+use kinolab_schema::{Kind, Param, WidgetSchema, widgets};
 use kinolab_widgets::theme;
 use kinolab_widgets::widget::error_box;
 
@@ -29,7 +29,7 @@ pub fn gallery_ui(
                     .strong(),
             );
             ui.label("Every widget a lesson can embed, with the parameters a widget block may give it. Each one below runs at its defaults; open one alone to link or embed it.");
-            for schema in WIDGETS {
+            for schema in widgets() {
                 ui.add_space(14.0);
                 entry(ui, schema, slots, navigate);
             }

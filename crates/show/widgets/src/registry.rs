@@ -74,7 +74,7 @@ mod tests {
 
     #[test]
     fn schema_and_registry_list_the_same_widgets() {
-        let schema: Vec<&str> = kinolab_schema::WIDGETS.iter().map(|w| w.name).collect();
+        let schema: Vec<&str> = kinolab_schema::widgets().map(|w| w.name).collect();
         let built: Vec<&str> = CONSTRUCTORS.iter().map(|(n, _)| *n).collect();
         assert_eq!(schema, built);
     }

@@ -5,15 +5,16 @@
 //! default written the way a lesson writes it, and a line of help. The
 //! lesson checker ([`check_course`]), the command line, the JS API, the
 //! widget gallery and the widgets' own constructors all read this one
-//! catalogue ([`WIDGETS`]), so a lesson that names an unknown widget or
+//! catalogue ([`widgets`]), so a lesson that names an unknown widget or
 //! gives a parameter a bad value is rejected everywhere with the same
 //! message, naming the file and line.
 
 mod catalogue;
 mod check;
 mod params;
+pub mod settings;
 
-pub use catalogue::{WIDGETS, robot_of};
+pub use catalogue::{robot_of, widgets};
 pub use check::{check_course, check_lesson};
 pub use params::{Params, Value};
 
@@ -132,7 +133,7 @@ impl WidgetSchema {
 
 /// The widget called `name`.
 pub fn find(name: &str) -> Option<&'static WidgetSchema> {
-    WIDGETS.iter().find(|w| w.name == name)
+    widgets().find(|w| w.name == name)
 }
 
 /// Check a widget block on its own: its name, every parameter and the
@@ -140,7 +141,7 @@ pub fn find(name: &str) -> Option<&'static WidgetSchema> {
 /// adds that.
 pub fn validate(spec: &kinolab_lessons::WidgetSpec) -> Result<Params, String> {
     let Some(schema) = find(&spec.name) else {
-        let known: Vec<&str> = WIDGETS.iter().map(|w| w.name).collect();
+        let known: Vec<&str> = widgets().map(|w| w.name).collect();
         return Err(format!(
             "there is no widget named `{}` (known widgets: {})",
             spec.name,
@@ -172,7 +173,7 @@ mod tests {
 
     #[test]
     fn every_widget_accepts_its_defaults_and_names_are_unique() {
-        for w in WIDGETS {
+        for w in widgets() {
             let p = validate(&spec(w.name, &[])).unwrap_or_else(|e| panic!("{}: {e}", w.name));
             for param in w.params {
                 assert_eq!(
@@ -182,7 +183,7 @@ mod tests {
                     param.name
                 );
             }
-            assert_eq!(WIDGETS.iter().filter(|o| o.name == w.name).count(), 1);
+            assert_eq!(widgets().filter(|o| o.name == w.name).count(), 1);
         }
     }
 

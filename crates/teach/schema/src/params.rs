@@ -74,6 +74,13 @@ impl Params {
             .and_then(|(_, v, _)| v.as_ref())
     }
 
+    /// Every parameter that has a value (given or default), by name.
+    pub fn values(&self) -> impl Iterator<Item = (&'static str, &Value)> {
+        self.values
+            .iter()
+            .filter_map(|(name, value, _)| value.as_ref().map(|v| (*name, v)))
+    }
+
     /// Whether the lesson wrote this parameter itself.
     pub fn given(&self, name: &str) -> bool {
         self.values.iter().any(|(n, _, given)| *n == name && *given)
@@ -130,7 +137,7 @@ impl Params {
 
 /// One value checked against its kind; the error completes "parameter
 /// `x` …".
-fn parse(param: &Param, text: &str) -> Result<Value, String> {
+pub(crate) fn parse(param: &Param, text: &str) -> Result<Value, String> {
     let text = text.trim();
     match &param.kind {
         Kind::Number { min, max } => match number(text) {
