@@ -1,7 +1,7 @@
 //! Values for fields a file may leave out, as serde's `default = "…"`
 //! wants them (a function): `kinolab_common::defaults::whole::<120>` for
-//! 120 s, `reciprocal::<20>` for a 0.05 s step, `one` for a count or a
-//! gain of 1, `tenth` for 0.1.
+//! 120 s, `reciprocal::<20>` for a 0.05 s step, `count::<1500>` for a
+//! count, `one` for a count or a gain of 1, `tenth` for 0.1.
 
 /// 1, of any number type.
 pub fn one<T: From<u8>>() -> T {
@@ -16,6 +16,11 @@ pub fn tenth() -> f64 {
 /// The whole number `N`, as a float.
 pub fn whole<const N: u32>() -> f64 {
     f64::from(N)
+}
+
+/// The count `N`.
+pub fn count<const N: usize>() -> usize {
+    N
 }
 
 /// 1/`N`: the nearest float to it, the same value as the literal.

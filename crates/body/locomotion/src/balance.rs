@@ -15,10 +15,49 @@
 //! foot; when a push sends ξ past the toe, the ZMP the motion would need
 //! has left the foot, p stays at the toe, and the body falls forwards.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::FieldError;
 use crate::transport::STANDARD_GRAVITY;
+
+/// A push-recovery run as a file (`*.zmp.json`): the body's height, the
+/// foot, where the body starts and how hard it is pushed, and the run's
+/// length and step.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PushRun {
+    /// z_c, m.
+    pub height: f64,
+    /// The foot's back and front edges along x, m.
+    pub heel: f64,
+    pub toe: f64,
+    /// Where the body starts, m (at rest).
+    #[serde(default)]
+    pub x0: f64,
+    /// The speed the push gives the body, m/s.
+    pub push: f64,
+    #[serde(default = "kinolab_common::defaults::whole::<4>")]
+    pub duration: f64,
+    #[serde(default = "kinolab_common::defaults::reciprocal::<200>")]
+    pub dt: f64,
+}
+
+impl PushRun {
+    /// Read a push-recovery file; errors name the field.
+    pub fn from_json(text: &str) -> Result<Self, FieldError> {
+        kinolab_common::error::from_json(text)
+    }
+
+    /// The run.
+    pub fn run(&self) -> Result<Recovery, FieldError> {
+        CartTable::new(self.height, self.heel, self.toe)?.push(
+            self.x0,
+            self.push,
+            self.duration,
+            self.dt,
+        )
+    }
+}
 
 /// A cart on a table: the body's height and the foot under it.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -101,6 +101,24 @@ impl Walker {
         }
     }
 
+    /// The most instants [`Walker::cycle`] solves.
+    pub const MAX_SAMPLES: usize = 2000;
+
+    /// One cycle at `samples` + 1 instants τ = k/`samples` (k = 0 …
+    /// `samples`), each solved from the one before, starting at the zero
+    /// state: what the lab's walker shows and `kinolab walk` prints.
+    pub fn cycle(&self, samples: usize) -> Result<Vec<Step>, FieldError> {
+        kinolab_common::error::in_range("samples", samples as f64, 1.0, Self::MAX_SAMPLES as f64)?;
+        let mut q = self.model.zero_state();
+        let mut steps = Vec::with_capacity(samples + 1);
+        for k in 0..=samples {
+            let step = self.step(k as f64 / samples as f64, &q)?;
+            q.clone_from(&step.q);
+            steps.push(step);
+        }
+        Ok(steps)
+    }
+
     /// The joint values at `tau`, each leg solved on its own from `seed`
     /// (the previous instant's values make the motion smooth).
     pub fn step(&self, tau: f64, seed: &[f64]) -> Result<Step, FieldError> {

@@ -2,7 +2,10 @@
 //! statically stable, a gait through its cycle, and oscillators settling
 //! into a gait.
 
+use kinolab_locomotion::balance::{PushRun, Recovery};
+use kinolab_locomotion::walker::{Step, Walker};
 use kinolab_locomotion::{Cpg, Gait, report};
+use serde::Serialize;
 
 use crate::source::unknown;
 use crate::{Error, Files, Operation, Source};
@@ -72,5 +75,61 @@ impl Operation for Oscillators {
     fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
         let cpg = self.cpg.file_only("cpg", "a CPG file", Cpg::from_json)?;
         report::cpg(&cpg).map_err(|e| Error::input("cpg", e))
+    }
+}
+
+/// `kinolab zmp`: a push-recovery run of the cart-table model (a
+/// `*.zmp.json` file): the body, its ZMP and the capture point each step.
+#[derive(Debug, Clone)]
+pub struct Zmp {
+    pub run: Source,
+}
+
+impl Operation for Zmp {
+    type Report = Recovery;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        let run = self
+            .run
+            .file_only("run", "a push-recovery file", PushRun::from_json)?;
+        run.run().map_err(|e| Error::input("run", e))
+    }
+}
+
+/// `kinolab walk`: the lab's hexapod walking a six-legged gait by per-leg
+/// inverse kinematics, at `samples` + 1 instants of one cycle.
+#[derive(Debug, Clone)]
+pub struct Walk {
+    pub gait: Source,
+    /// How high a swinging foot is lifted, m.
+    pub lift: f64,
+    pub samples: usize,
+    /// The stride, m (the gait's own when `None`).
+    pub stride: Option<f64>,
+}
+
+/// The walker through one cycle.
+#[derive(Debug, Clone, Serialize)]
+pub struct WalkReport {
+    pub gait: String,
+    pub stride: f64,
+    pub lift: f64,
+    pub steps: Vec<Step>,
+}
+
+impl Operation for Walk {
+    type Report = WalkReport;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        let mut gait = gait(&self.gait)?;
+        if let Some(stride) = self.stride {
+            gait.stride = stride;
+        }
+        let as_argument = Error::argument_or_input(&["lift", "samples", "stride"], "gait");
+        let walker = Walker::new(gait.clone(), self.lift).map_err(&as_argument)?;
+        Ok(WalkReport {
+            gait: gait.name,
+            stride: gait.stride,
+            lift: self.lift,
+            steps: walker.cycle(self.samples).map_err(as_argument)?,
+        })
     }
 }

@@ -17,10 +17,12 @@
 //!   and collisions of mechanism models;
 //! - [`fields`]: potential fields, their equilibria and descents;
 //! - [`behaviours`]: behaviours run in a world;
-//! - [`legs`]: leg events, static stability, gaits and oscillators;
+//! - [`legs`]: leg events, static stability, gaits and oscillators, a
+//!   push on the cart-table model, the hexapod walking;
 //! - [`plans`]: grid plans, architectures in the arena, sensing routes;
 //! - [`components`]: systems of communicating components;
-//! - [`teach`]: lessons, widgets and the automation unit's pick cell.
+//! - [`teach`]: lessons, widgets, the automation unit's pick cell and
+//!   Simon's ant.
 
 mod error;
 mod source;
@@ -101,6 +103,8 @@ pub const OPERATIONS: &[Names] = &[
     names("run", "runBehaviours"),
     names("gait", "gait"),
     names("cpg", "cpg"),
+    names("zmp", "zmp"),
+    names("walk", "walk"),
     names("plan", "plan"),
     names("arena", "arena"),
     names("routes", "routes"),
@@ -109,6 +113,7 @@ pub const OPERATIONS: &[Names] = &[
     names("check-lesson", "checkLesson"),
     names("widgets", "widgets"),
     names("pick-cell", "pickCell"),
+    names("ant", "antWalk"),
 ];
 
 const fn names(command: &'static str, js: &'static str) -> Names {

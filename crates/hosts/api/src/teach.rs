@@ -130,3 +130,22 @@ impl Operation for PickCell {
         Ok(cell.report(self.count as usize, u64::from(self.seed)))
     }
 }
+
+/// `kinolab ant`: Simon's ant crossing a seeded pebble beach at a body
+/// size (a `*.ant.json` file): its path, tortuosity and turns.
+#[derive(Debug, Clone)]
+pub struct AntWalk {
+    pub beach: crate::Source,
+}
+
+impl Operation for AntWalk {
+    type Report = kinolab_design::ant::Walk;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        let walk = self.beach.file_only(
+            "beach",
+            "an ant's walk file",
+            kinolab_design::ant::BeachWalk::from_json,
+        )?;
+        walk.walk().map_err(|e| Error::input("beach", e))
+    }
+}

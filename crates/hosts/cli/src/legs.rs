@@ -1,4 +1,5 @@
-//! `kinolab leg-events`, `stability`, `gait` and `cpg`: legged walking.
+//! `kinolab leg-events`, `stability`, `gait`, `cpg`, `zmp` and `walk`:
+//! legged walking and balance.
 
 use std::path::PathBuf;
 
@@ -34,6 +35,25 @@ pub(crate) enum Command {
         #[arg(long, default_value_t = 100, allow_hyphen_values = true)]
         samples: usize,
     },
+    /// A push on the cart-table model: the body, its ZMP and the capture point each step, and whether the foot held it.
+    Zmp {
+        /// A push-recovery file (`*.zmp.json`: height, heel, toe, x0, push, duration, dt).
+        run: PathBuf,
+    },
+    /// The lab's hexapod walking a six-legged gait by per-leg inverse kinematics: joint values through one cycle.
+    Walk {
+        /// A gait file with six legs, or `catalogue:<id>` (`hexapod-tripod`, `hexapod-wave`, …).
+        gait: PathBuf,
+        /// How high a swinging foot is lifted, m.
+        #[arg(long, default_value_t = 0.03, allow_hyphen_values = true)]
+        lift: f64,
+        /// Instants over the cycle: τ = k/N for k = 0 … N.
+        #[arg(long, default_value_t = 60, allow_hyphen_values = true)]
+        samples: usize,
+        /// The stride, m (the gait's own when left out).
+        #[arg(long, allow_hyphen_values = true)]
+        stride: Option<f64>,
+    },
     /// Phase oscillators, one per leg, coupled towards a gait: where they end and whether they lock.
     Cpg {
         /// A CPG file (`*.cpg.json`, see the contract).
@@ -55,6 +75,21 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             &legs::GaitCycle {
                 gait: source(&gait)?,
                 samples,
+            },
+            Some(&gait),
+        ),
+        Command::Zmp { run } => ask(&legs::Zmp { run: source(&run)? }, Some(&run)),
+        Command::Walk {
+            gait,
+            lift,
+            samples,
+            stride,
+        } => ask(
+            &legs::Walk {
+                gait: source(&gait)?,
+                lift,
+                samples,
+                stride,
             },
             Some(&gait),
         ),

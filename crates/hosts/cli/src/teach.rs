@@ -1,6 +1,6 @@
 //! `kinolab lessons` and `check-lesson` (the lesson checker), `widgets`
-//! (what a lesson may embed) and `pick-cell` (the automation unit's
-//! pick-and-place cell).
+//! (what a lesson may embed), `pick-cell` (the automation unit's
+//! pick-and-place cell) and `ant` (Simon's ant on the beach).
 
 use std::path::{Path, PathBuf};
 
@@ -26,6 +26,11 @@ pub(crate) enum Command {
     },
     /// Every widget a lesson can embed, with its parameters.
     Widgets,
+    /// Simon's ant crossing a seeded pebble beach at a body size: its path, tortuosity and turns.
+    Ant {
+        /// An ant's walk file (`*.ant.json`: seed, pebbles, size).
+        beach: PathBuf,
+    },
     /// The pick-and-place cell: a scripted cell against one that senses each part.
     PickCell {
         /// How far parts land from their nominal place (SD), m.
@@ -60,6 +65,12 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             Some(&file),
         ),
         Command::Widgets => ask(&teach::Widgets, None),
+        Command::Ant { beach } => ask(
+            &teach::AntWalk {
+                beach: crate::ask::source(&beach)?,
+            },
+            Some(&beach),
+        ),
         Command::PickCell {
             placement_error,
             gripper_tolerance,

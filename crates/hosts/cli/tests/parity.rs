@@ -164,6 +164,14 @@ fn js(case: &Case) -> Option<Reply> {
             Some(a.number("samples").map_or(100, |s| s as usize)),
         ),
         "cpg" => calls::cpg(first()),
+        "zmp" => calls::zmp(first()),
+        "ant" => calls::ant_walk(first()),
+        "walk" => calls::walk(
+            first(),
+            Some(a.number("lift").unwrap_or(0.03)),
+            Some(a.number("samples").map_or(60, |s| s as usize)),
+            a.number("stride"),
+        ),
         "plan" => calls::plan(
             first(),
             json!(numbers(a.get("from").unwrap())),

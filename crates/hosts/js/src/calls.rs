@@ -55,6 +55,25 @@ pub fn cpg(file: Value) -> Reply {
     ask(&legs::Oscillators { cpg: source(file) })
 }
 
+pub fn zmp(run: Value) -> Reply {
+    ask(&legs::Zmp { run: source(run) })
+}
+
+pub fn walk(gait: Value, lift: Option<f64>, samples: Option<usize>, stride: Option<f64>) -> Reply {
+    ask(&legs::Walk {
+        gait: source(gait),
+        lift: lift.unwrap_or(0.03),
+        samples: samples.unwrap_or(60),
+        stride,
+    })
+}
+
+pub fn ant_walk(beach: Value) -> Reply {
+    ask(&teach::AntWalk {
+        beach: source(beach),
+    })
+}
+
 pub fn robots() -> Reply {
     ask(&wheels::Robots)
 }

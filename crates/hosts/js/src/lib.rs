@@ -91,6 +91,28 @@ pub fn cpg(file: JsValue) -> Result<JsValue, JsError> {
     to_js(calls::cpg(from_js("cpg", file)?))
 }
 
+/// What `kinolab zmp` prints for a push-recovery file (object or JSON
+/// text): `{ samples: [{ t, x, xd, xdd, zmp, wanted, inside }], recovered,
+/// left_foot_at }`.
+#[wasm_bindgen]
+pub fn zmp(run: JsValue) -> Result<JsValue, JsError> {
+    to_js(calls::zmp(from_js("run", run)?))
+}
+
+/// What `kinolab walk` prints: the hexapod walking a six-legged gait
+/// (file or `"catalogue:<id>"`) through one cycle, `{ gait, stride, lift,
+/// steps: [{ tau, q, targets, errors, unreachable }] }`; `lift` (m),
+/// `samples` and `stride` (m) may be left out (0.03, 60, the gait's).
+#[wasm_bindgen]
+pub fn walk(
+    gait: JsValue,
+    lift: Option<f64>,
+    samples: Option<usize>,
+    stride: Option<f64>,
+) -> Result<JsValue, JsError> {
+    to_js(calls::walk(from_js("gait", gait)?, lift, samples, stride))
+}
+
 // ---------------------------------------------------------------- wheels
 
 /// The catalogue: `[{ id, name, summary }]`.
@@ -310,6 +332,13 @@ pub fn check_lesson(file: &str, markdown: &str) -> Result<JsValue, JsError> {
 #[wasm_bindgen]
 pub fn widgets() -> Result<JsValue, JsError> {
     to_js(calls::widgets())
+}
+
+/// What `kinolab ant` prints for an ant's walk file (object or JSON text):
+/// `{ size, path, length, tortuosity, turns, reached, obstacles }`.
+#[wasm_bindgen(js_name = antWalk)]
+pub fn ant_walk(beach: JsValue) -> Result<JsValue, JsError> {
+    to_js(calls::ant_walk(from_js("beach", beach)?))
 }
 
 /// What `kinolab pick-cell` prints: the pick-and-place cell with lengths in

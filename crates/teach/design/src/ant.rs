@@ -122,6 +122,29 @@ fn bucket_of(x: f64, y: f64, nx: usize, ny: usize) -> (usize, usize) {
     (i, j)
 }
 
+/// An ant's walk as a file (`*.ant.json`): the beach's seed and how many
+/// pebbles it has, and the ant's size (1 = an ant).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BeachWalk {
+    pub seed: u64,
+    #[serde(default = "kinolab_common::defaults::count::<DEFAULT_PEBBLES>")]
+    pub pebbles: usize,
+    pub size: f64,
+}
+
+impl BeachWalk {
+    /// Read a walk file; errors name the field.
+    pub fn from_json(text: &str) -> Result<Self, FieldError> {
+        kinolab_common::error::from_json(text)
+    }
+
+    /// The walk.
+    pub fn walk(&self) -> Result<Walk, FieldError> {
+        walk(&Beach::new(self.seed, self.pebbles)?, self.size)
+    }
+}
+
 /// One walk across the beach.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Walk {

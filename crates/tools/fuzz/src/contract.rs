@@ -63,10 +63,12 @@ impl Verdict {
 
 /// Keys whose value may be `null` in an answer: "none" in the contract's
 /// sense (no time to goal, no ICR, no path), never a number that overflowed.
-pub const NULLABLE: [&str; 17] = [
+pub const NULLABLE: [&str; 18] = [
     "behaviour",
     // A joint without limits; a widget parameter with no default; a
-    // straight drive's turn radius; a top-level group of bodies.
+    // straight drive's turn radius; a top-level group of bodies; a foot
+    // that held.
+    "left_foot_at",
     "limits",
     "parent",
     "default",

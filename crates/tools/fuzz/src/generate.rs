@@ -10,7 +10,7 @@ use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
 use crate::seeds::Seeds;
 
 /// Every command the generators cover, with its share of the cases.
-pub const COMMANDS: [(&str, u32); 31] = [
+pub const COMMANDS: [(&str, u32); 34] = [
     ("leg-events", 2),
     ("stability", 4),
     ("analyze", 8),
@@ -37,6 +37,9 @@ pub const COMMANDS: [(&str, u32); 31] = [
     ("pick-cell", 3),
     ("gait", 6),
     ("cpg", 5),
+    ("zmp", 3),
+    ("walk", 3),
+    ("ant", 2),
     ("plan", 6),
     ("arena", 3),
     ("routes", 2),
@@ -137,6 +140,13 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str, valid: bool) -> Ca
         "cpg" => {
             g.file_arg(&seeds.cpgs, &[], "net.cpg.json");
         }
+        "zmp" => {
+            g.file_arg(&seeds.pushes, &[], "push.zmp.json");
+        }
+        "ant" => {
+            g.file_arg(&seeds.beaches, &[], "beach.ant.json");
+        }
+        "walk" => walk_case(&mut g, seeds),
         "plan" => plan_case(&mut g, seeds),
         "arena" => arena_case(&mut g, seeds),
         "routes" => routes_case(&mut g),
@@ -384,6 +394,33 @@ fn gait_case(g: &mut Gen<'_>, seeds: &Seeds) {
     if g.dice.chance(0.4) {
         let n = g.pick_text(&["1", "7", "100"], &["1000", "100000", "100001", "0", "-1"]);
         g.option("--samples", &n);
+    }
+}
+
+/// A six-legged gait, a lift, samples and sometimes a stride.
+fn walk_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    let hexapods: Vec<String> = seeds
+        .gait_ids
+        .iter()
+        .filter(|id| id.starts_with("hexapod"))
+        .cloned()
+        .collect();
+    let files: Vec<String> = seeds
+        .gaits
+        .iter()
+        .filter(|g| g.matches("\"name\"").count() > 6)
+        .cloned()
+        .collect();
+    g.file_arg(&files, &hexapods, "walk.gait.json");
+    if g.dice.chance(0.6) {
+        let lift = g.pick_text(&["0.01", "0.03", "0.05"], &["-1", "nan", "50"]);
+        g.option("--lift", &lift);
+    }
+    let samples = g.pick_text(&["4", "12", "24"], &["0", "5000", "-1"]);
+    g.option("--samples", &samples);
+    if g.dice.chance(0.3) {
+        let stride = g.pick_text(&["0.05", "0.1", "0.2"], &["-0.5", "9"]);
+        g.option("--stride", &stride);
     }
 }
 

@@ -17,6 +17,8 @@ pub struct Seeds {
     pub gaits: Vec<String>,
     pub cpgs: Vec<String>,
     pub systems: Vec<String>,
+    pub pushes: Vec<String>,
+    pub beaches: Vec<String>,
     /// Catalogue ids, for `catalogue:<id>` arguments.
     pub robot_ids: Vec<String>,
     pub model_ids: Vec<String>,
@@ -90,6 +92,8 @@ impl Seeds {
                 .map(|g| gait_json(&g))
                 .collect(),
             cpgs: vec![CPG.to_owned()],
+            pushes: PUSHES.iter().map(|p| (*p).to_owned()).collect(),
+            beaches: BEACHES.iter().map(|b| (*b).to_owned()).collect(),
             systems: files_in(&root.join("crates/talk/components/systems"), ".system.json"),
             gait_ids: kinolab_locomotion::named_ids().map(str::to_owned).collect(),
             world_ids: kinolab_world::catalogue::WORLDS
@@ -130,6 +134,18 @@ const CONTRACT_WORLD: &str = r#"{ "name": "two-rooms", "bounds": [0.0, 0.0, 10.0
     { "kind": "wall", "from": [7, 2], "to": [7, 6], "thickness": 0.1 } ] }"#;
 
 /// The contract's CPG example.
+/// Push-recovery runs: a push the foot holds, one it does not.
+const PUSHES: [&str; 2] = [
+    r#"{ "height": 0.8, "heel": -0.05, "toe": 0.15, "push": 0.2 }"#,
+    r#"{ "height": 0.9, "heel": -0.1, "toe": 0.2, "x0": 0.02, "push": 0.6, "duration": 2, "dt": 0.01 }"#,
+];
+
+/// Ants on beaches.
+const BEACHES: [&str; 2] = [
+    r#"{ "seed": 3, "pebbles": 400, "size": 12 }"#,
+    r#"{ "seed": 11, "size": 1 }"#,
+];
+
 const CPG: &str = r#"{ "frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"],
   "target_phases": [0.25, 0.75, 0.0, 0.5], "weight": 2.0,
   "initial_deg": [0, 10, 20, 30], "dt": 0.001, "duration": 10.0 }"#;
