@@ -34,6 +34,7 @@ pub mod fields;
 pub mod link;
 pub mod locomotion;
 pub mod mechanism;
+pub mod player;
 pub mod registry;
 pub mod theme;
 pub mod wheels;

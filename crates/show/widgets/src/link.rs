@@ -1,18 +1,25 @@
 //! Widget state in a link, one format for every widget.
 //!
-//! A widget keeps what a link must carry in a serde struct; [`encode`]
-//! writes it with postcard (serde's compact binary form) as URL-safe
-//! base64 after a version letter, and [`decode`] reads it back. A damaged,
-//! truncated or foreign state decodes to `None`, never to a panic, so a bad
-//! link only means the widget starts as the lesson set it up.
+//! A link carries a widget's settings (the struct it reads from its
+//! schema-checked parameters), the instant its player shows and the events
+//! sprung while it ran: [`write`] puts them as the `key: value` lines a
+//! lesson would write (plus `@t` and `@events`) in URL-safe base64 after
+//! the version letter `b`, and [`read`] takes them back through the widget
+//! schema, so a value out of range or of the wrong kind is refused with
+//! the schema's own message. Nothing here panics on any text.
+//!
+//! Links made before settings were typed (version `a`: a widget's own
+//! struct in postcard) still open: [`decode`] reads them.
 
 use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 
-/// The format's version; states of another version are ignored.
+/// The first format's version (postcard of a widget's own struct).
 const VERSION: char = 'a';
+/// The settings format's version.
+const SETTINGS: char = 'b';
 
 /// The longest state a link may carry, in characters.
 pub const MAX_LEN: usize = 8_000;
@@ -42,6 +49,99 @@ pub fn decode<T: DeserializeOwned>(text: &str) -> Option<T> {
     let bytes = URL_SAFE_NO_PAD.decode(body).ok()?;
     let (state, rest) = postcard::take_from_bytes::<T>(&bytes).ok()?;
     rest.is_empty().then_some(state)
+}
+
+/// What a link carries beyond the settings: the instant the player shows
+/// (s) and the events sprung while the run went, each at its time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Moment<E> {
+    pub instant: f64,
+    pub events: Vec<(f64, E)>,
+}
+
+impl<E> Default for Moment<E> {
+    fn default() -> Self {
+        Self {
+            instant: 0.0,
+            events: Vec::new(),
+        }
+    }
+}
+
+/// `settings` of the widget `widget`, with `moment`, as link text; `None`
+/// while they are what the lesson set up (`initial`) and nothing has run.
+pub fn write<T: Serialize + PartialEq, E: Serialize>(
+    widget: &str,
+    settings: &T,
+    initial: &T,
+    moment: &Moment<E>,
+) -> Option<String> {
+    if settings == initial && moment.instant == 0.0 && moment.events.is_empty() {
+        return None;
+    }
+    let mut lines = String::new();
+    for (key, value) in kinolab_schema::settings::to_params(widget, settings).ok()? {
+        lines += &format!("{key}: {value}\n");
+    }
+    if moment.instant != 0.0 {
+        lines += &format!("@t: {}\n", moment.instant);
+    }
+    if !moment.events.is_empty() {
+        lines += &format!("@events: {}\n", serde_json::to_string(&moment.events).ok()?);
+    }
+    let mut text = String::from(SETTINGS);
+    URL_SAFE_NO_PAD.encode_string(lines.as_bytes(), &mut text);
+    (text.len() <= MAX_LEN).then_some(text)
+}
+
+/// Link text back into settings and a moment, checked by the widget
+/// schema; the error says in a line what was wrong.
+pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
+    widget: &str,
+    text: &str,
+) -> Result<(T, Moment<E>), String> {
+    if text.len() > MAX_LEN {
+        return Err(format!("it is longer than {MAX_LEN} characters"));
+    }
+    let body = text
+        .strip_prefix(SETTINGS)
+        .ok_or("it is not a widget state this lab can read")?;
+    let bytes = URL_SAFE_NO_PAD
+        .decode(body)
+        .map_err(|_| "it is damaged (cut short or altered)".to_owned())?;
+    let lines = String::from_utf8(bytes).map_err(|_| "it is damaged (not text)".to_owned())?;
+    let mut params = Vec::new();
+    let mut moment = Moment::default();
+    for line in lines.lines() {
+        let (key, value) = line
+            .split_once(": ")
+            .ok_or_else(|| format!("`{line}` is not a setting"))?;
+        match key {
+            "@t" => moment.instant = instant(value)?,
+            "@events" => {
+                moment.events =
+                    serde_json::from_str(value).map_err(|_| "its events are damaged".to_owned())?;
+            }
+            _ => params.push((key.to_owned(), value.to_owned())),
+        }
+    }
+    let spec = kinolab_lessons::WidgetSpec {
+        name: widget.to_owned(),
+        params,
+        line: 0,
+    };
+    let settings = kinolab_schema::validate(&spec)?.settings()?;
+    Ok((settings, moment))
+}
+
+/// An instant: a time from 0 to an hour.
+fn instant(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(t) if (0.0..=3600.0).contains(&t) => Ok(t),
+        _ => Err(format!(
+            "its instant `{text}` is not a time from 0 to 3600 s"
+        )),
+    }
 }
 
 #[cfg(test)]
@@ -75,6 +175,54 @@ mod tests {
             "{text}"
         );
         assert_eq!(decode::<State>(&text), Some(sample()));
+    }
+
+    /// The leg-events widget's settings.
+    #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+    struct Legs {
+        legs: u32,
+    }
+
+    #[test]
+    fn settings_and_the_moment_round_trip_through_the_schema() {
+        let initial = Legs { legs: 2 };
+        let none: Moment<String> = Moment::default();
+        assert_eq!(write("leg-events", &initial, &initial, &none), None);
+        let moment = Moment {
+            instant: 12.4,
+            events: vec![(3.25, "door".to_owned()), (7.0, "person".to_owned())],
+        };
+        let text = write("leg-events", &Legs { legs: 6 }, &initial, &moment).unwrap_or_default();
+        assert!(text.starts_with('b'), "{text}");
+        let (back, m): (Legs, Moment<String>) =
+            read("leg-events", &text).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((back, m), (Legs { legs: 6 }, moment));
+    }
+
+    #[test]
+    fn damaged_settings_say_what_is_wrong() {
+        let encode = |lines: &str| format!("b{}", URL_SAFE_NO_PAD.encode(lines));
+        let read_legs = |text: &str| read::<Legs, String>("leg-events", text).map(|(s, _)| s);
+        let e = read_legs(&encode("legs: 99\n")).unwrap_err();
+        assert_eq!(
+            e,
+            "parameter `legs` must be a whole number from 1 to 12, found `99`"
+        );
+        let e = read_legs(&encode("legs: 4\ncolour: red\n")).unwrap_err();
+        assert!(e.contains("has no parameter `colour`"), "{e}");
+        let e = read_legs(&encode("legs: 4\n@t: 1e308\n")).unwrap_err();
+        assert!(e.contains("instant"), "{e}");
+        let e = read_legs(&encode("legs: 4\n@events: [[1, \n")).unwrap_err();
+        assert!(e.contains("events"), "{e}");
+        let text = encode("legs: 4\n");
+        assert!(read_legs(&text[..text.len() - 2]).is_err(), "cut short");
+        assert!(read_legs("a!!!").is_err());
+        assert!(read_legs(&format!("b{}", "A".repeat(MAX_LEN))).is_err());
+        assert_eq!(
+            read_legs(&encode("")),
+            Ok(Legs { legs: 2 }),
+            "the schema's default"
+        );
     }
 
     #[test]
