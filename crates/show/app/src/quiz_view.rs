@@ -1,7 +1,7 @@
 //! A quiz card: the question, the answer controls, a Check button, and the
 //! verdict with its explanation once answered.
 
-use egui::{Color32, RichText, Stroke};
+use egui::{RichText, Stroke};
 use kinolab_lessons::{Answer, Inline, Quiz, QuizKind};
 
 use crate::lesson_view::inline_ui;
@@ -82,17 +82,17 @@ pub fn quiz_ui(
                         }
                     }
                     if let Some(error) = &state.input_error {
-                        ui.label(RichText::new(error).color(theme::warn_color(ui)));
+                        ui.label(RichText::new(error).color(theme::error_color(ui)));
                     }
                 });
                 if let Some(right) = state.verdict {
                     ui.add_space(6.0);
                     let (text, color) = if right {
-                        ("Right.", Color32::from_rgb(40, 160, 80))
+                        ("Right.", theme::good_color(ui))
                     } else {
                         (
                             "Not quite. Read why, then try again.",
-                            Color32::from_rgb(210, 70, 60),
+                            theme::error_color(ui),
                         )
                     };
                     ui.label(
@@ -209,15 +209,15 @@ fn sort_feedback(ui: &mut egui::Ui, quiz: &Quiz, state: &QuizState, navigate: &m
     };
     for ((item, right), _) in items.iter().zip(marks).zip(0..) {
         ui.horizontal_wrapped(|ui| {
-            let (text, colour) = if right {
+            let (text, color) = if right {
                 ("right:".to_owned(), theme::good_color(ui))
             } else {
                 (
                     format!("belongs in {}:", bins[item.bin]),
-                    theme::warn_color(ui),
+                    theme::error_color(ui),
                 )
             };
-            ui.label(RichText::new(text).color(colour).size(theme::BODY_SIZE));
+            ui.label(RichText::new(text).color(color).size(theme::BODY_SIZE));
             inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
             if let Some(why) = &item.why {
                 ui.label(RichText::new("·").size(theme::BODY_SIZE));

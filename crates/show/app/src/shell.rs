@@ -261,8 +261,7 @@ impl KinolabApp {
             .fixed_pos(area.min)
             .show(ctx, |ui| {
                 let (rect, response) = ui.allocate_exact_size(area.size(), egui::Sense::click());
-                ui.painter()
-                    .rect_filled(rect, 0.0, egui::Color32::from_black_alpha(110));
+                ui.painter().rect_filled(rect, 0.0, theme::SCRIM);
                 response
             });
         let width = OVERLAY_LIST.min(screen.width() - 40.0).max(200.0);
@@ -302,13 +301,20 @@ impl KinolabApp {
         let bar = egui::Panel::top("top-bar").show(ui, |ui| {
             ui.horizontal(|ui| {
                 let toggle = ui
-                    .selectable_label(sidebar_open, RichText::new("≡ Lessons").size(15.0))
+                    .selectable_label(
+                        sidebar_open,
+                        RichText::new("≡ Lessons").size(theme::BUTTON_SIZE),
+                    )
                     .on_hover_text("Show or hide the list of lessons");
                 if toggle.clicked() {
                     self.sidebar_open = Some(!sidebar_open);
                 }
                 if ui
-                    .link(RichText::new("Kinolab").strong().size(18.0))
+                    .link(
+                        RichText::new("Kinolab")
+                            .strong()
+                            .size(theme::heading_size(4)),
+                    )
                     .clicked()
                 {
                     self.navigate(Page::Home);
@@ -419,7 +425,7 @@ impl KinolabApp {
                     ui.add_space(12.0);
                     if let Some(notice) = self.notice.clone() {
                         ui.horizontal(|ui| {
-                            ui.label(RichText::new(notice.clone()).color(theme::warn_color(ui)));
+                            ui.label(RichText::new(notice.clone()).color(theme::error_color(ui)));
                             if ui.button("Dismiss").clicked() {
                                 self.notice = None;
                             }

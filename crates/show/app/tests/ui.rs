@@ -185,8 +185,7 @@ fn every_lesson_fits_a_phone_screen() {
         .with_size(egui::vec2(PHONE_WIDTH, 16000.0))
         .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
     let mut too_wide = Vec::new();
-    let widgets = kinolab_schema::widgets()
-        .map(|w| format!("gallery/{}", w.name));
+    let widgets = kinolab_schema::widgets().map(|w| format!("gallery/{}", w.name));
     let pages = widgets.chain(addresses);
     for address in pages {
         h.state_mut().follow_hash(&format!("#/{address}"));
@@ -438,7 +437,12 @@ fn the_gallery_lists_every_widget_from_the_schema_and_shows_each_alone() {
     h.run_steps(4);
     assert_eq!(
         h.state().page(),
-        &Page::Gallery(Some(kinolab_schema::widgets().nth(3).map(|w| w.name.to_owned()).unwrap_or_default()))
+        &Page::Gallery(Some(
+            kinolab_schema::widgets()
+                .nth(3)
+                .map(|w| w.name.to_owned())
+                .unwrap_or_default()
+        ))
     );
     // An unknown name says so.
     let mut h = animated(KinolabApp::new(None, "#/gallery/flux-capacitor"));

@@ -2,8 +2,22 @@
 
 use egui::{Color32, FontFamily, FontId, Stroke, TextStyle};
 
+/// Lesson text, and text a widget writes in the page's own font size.
 pub const BODY_SIZE: f32 = 16.0;
+/// Code blocks and inline code.
 pub const CODE_SIZE: f32 = 14.0;
+/// Button text, and the shell's menu toggle.
+pub const BUTTON_SIZE: f32 = 15.0;
+/// Prominent lines on a canvas: a title, a read-out or verdict, a legend's
+/// names, the main labels of a large drawing.
+pub const TITLE_SIZE: f32 = 13.0;
+/// Labels placed on a drawing (points, bodies, marks, names in boxes), and
+/// `.small()` captions under a widget.
+pub const LABEL_SIZE: f32 = 12.0;
+/// Secondary text: hints, axis names, names in tight places, legend rows.
+pub const SMALL_SIZE: f32 = 11.0;
+/// Tick numbers and time stamps, the smallest text the lab draws.
+pub const TINY_SIZE: f32 = 10.5;
 
 /// Heading sizes by Markdown level.
 pub fn heading_size(level: u8) -> f32 {
@@ -15,43 +29,123 @@ pub fn heading_size(level: u8) -> f32 {
     }
 }
 
-/// The lab's accent colour, readable on either background.
+/// An opaque colour ([`Color32::from_rgb`], short for the tables here).
+const fn rgb(r: u8, g: u8, b: u8) -> Color32 {
+    Color32::from_rgb(r, g, b)
+}
+
+/// Of a `[dark, light]` pair, the colour that suits the theme of `ui`.
+fn by_theme(ui: &egui::Ui, [dark, light]: [Color32; 2]) -> Color32 {
+    if ui.visuals().dark_mode { dark } else { light }
+}
+
+/// The lab's accent colour, readable on either background: what is chosen,
+/// what the learner drives, the start of a path.
 pub fn accent(ui: &egui::Ui) -> Color32 {
-    if ui.visuals().dark_mode {
-        Color32::from_rgb(110, 170, 255)
-    } else {
-        Color32::from_rgb(30, 100, 200)
+    by_theme(ui, [rgb(110, 170, 255), rgb(30, 100, 200)])
+}
+
+/// Success: a goal met, a right answer, a foot that holds, and goals
+/// themselves.
+pub fn good_color(ui: &egui::Ui) -> Color32 {
+    by_theme(ui, [rgb(90, 200, 120), rgb(30, 140, 60)])
+}
+
+/// Errors, refusals and failures: a wrong answer, a fall, a lost or refused
+/// message, a notice that something was reset, what a change breaks.
+pub fn error_color(ui: &egui::Ui) -> Color32 {
+    by_theme(ui, [rgb(255, 120, 100), rgb(190, 50, 40)])
+}
+
+/// Solid grey matter: walls, obstacles, plain bodies; also a control's
+/// outline at rest. At least 3:1 against the page in either theme.
+pub fn solid_color(ui: &egui::Ui) -> Color32 {
+    solid(ui.visuals().dark_mode)
+}
+
+/// [`solid_color`] for the dark theme or the light one.
+fn solid(dark: bool) -> Color32 {
+    Color32::from_gray(if dark { 150 } else { 110 })
+}
+
+/// A robot drawn as the one mover of its picture (the field sandbox's
+/// unicycle, the ant on the beach).
+pub fn robot_color(ui: &egui::Ui) -> Color32 {
+    by_theme(ui, [rgb(230, 170, 60), rgb(190, 110, 0)])
+}
+
+/// The ant beach's sand.
+pub fn sand_color(ui: &egui::Ui) -> Color32 {
+    by_theme(ui, [rgb(90, 80, 60), rgb(236, 222, 190)])
+}
+
+/// A pebble on the sand: dark where it is big enough to turn the ant aside.
+pub fn pebble_color(matters: bool) -> Color32 {
+    Color32::from_gray(if matters { 105 } else { 175 })
+}
+
+// Named hues: mid-tones that read as marks on either background, the same
+// in both themes. The domain colours below are made of them.
+
+/// Orange: "send" messages, the reactive architecture, industrial objects.
+pub const ORANGE: Color32 = rgb(230, 120, 40);
+/// Blue: "query" messages, the hierarchical architecture, business logic,
+/// a frame's z axis.
+pub const BLUE: Color32 = rgb(70, 140, 230);
+/// Green: "push-newest" messages, the hybrid architecture, business
+/// objects, named frames, a frame's y axis, the frog.
+pub const GREEN: Color32 = rgb(60, 170, 90);
+/// Teal: "push-timed" messages.
+pub const TEAL: Color32 = rgb(40, 160, 160);
+/// Magenta: "event" messages.
+pub const MAGENTA: Color32 = rgb(200, 70, 170);
+/// Gold: "wiring" messages.
+pub const GOLD: Color32 = rgb(170, 140, 40);
+/// Purple: the palette's sixth colour, a second trap.
+pub const PURPLE: Color32 = rgb(120, 110, 220);
+/// Red as a hue, not a verdict: a frame's x axis, a trap, the frog's tongue.
+pub const RED: Color32 = rgb(220, 60, 60);
+/// Yellow: a light, and a basin where the robot wanders.
+pub const YELLOW: Color32 = rgb(250, 200, 40);
+
+/// Nothing in particular: reference marks in plots, no behaviour in
+/// control, an unknown message pattern, a basin where the robot stalls.
+pub const NEUTRAL: Color32 = Color32::GRAY;
+
+/// Glass: an obstacle light and range sensors see through (a bumper finds it).
+pub const GLASS: Color32 = rgb(120, 190, 230);
+
+/// Dims the page behind an open drawer.
+pub const SCRIM: Color32 = Color32::from_black_alpha(110);
+
+/// A frame's x, y and z axes.
+pub const AXIS_COLORS: [Color32; 3] = [RED, GREEN, BLUE];
+
+/// The architectures hierarchical, reactive and hybrid, and the sensing
+/// routes that stand for them (global, local, hybrid).
+pub const ARCHITECTURE_COLORS: [Color32; 3] = [BLUE, ORANGE, GREEN];
+
+/// One colour per trap (local minimum) of a potential field.
+pub const TRAP_COLORS: [Color32; 4] = [RED, PURPLE, ORANGE, MAGENTA];
+
+/// The colour of a component-lab message pattern; neutral for any other.
+pub fn pattern_color(pattern: &str) -> Color32 {
+    match pattern {
+        "send" => ORANGE,
+        "query" => BLUE,
+        "push-newest" => GREEN,
+        "push-timed" => TEAL,
+        "event" => MAGENTA,
+        "wiring" => GOLD,
+        _ => NEUTRAL,
     }
 }
 
 /// The `i`-th of a cycle of distinct colours, readable on both themes: one
-/// per wheel, per plotted series, per leg.
+/// per wheel, per plotted series, per leg, per behaviour.
 pub fn palette(i: usize) -> Color32 {
-    const PALETTE: [Color32; 6] = [
-        Color32::from_rgb(230, 120, 40),
-        Color32::from_rgb(60, 150, 220),
-        Color32::from_rgb(90, 170, 80),
-        Color32::from_rgb(200, 80, 160),
-        Color32::from_rgb(170, 140, 40),
-        Color32::from_rgb(120, 110, 220),
-    ];
+    const PALETTE: [Color32; 6] = [ORANGE, BLUE, GREEN, MAGENTA, GOLD, PURPLE];
     PALETTE[i % PALETTE.len()]
-}
-
-pub fn good_color(ui: &egui::Ui) -> Color32 {
-    if ui.visuals().dark_mode {
-        Color32::from_rgb(90, 200, 120)
-    } else {
-        Color32::from_rgb(30, 140, 60)
-    }
-}
-
-pub fn warn_color(ui: &egui::Ui) -> Color32 {
-    if ui.visuals().dark_mode {
-        Color32::from_rgb(255, 120, 100)
-    } else {
-        Color32::from_rgb(190, 50, 40)
-    }
 }
 
 /// Fonts and text styles for the lab; call once, before the first frame
@@ -73,16 +167,6 @@ pub fn touch_first(ctx: &egui::Context) {
 /// (1.4.11, non-text contrast).
 pub const CONTROL_CONTRAST: f32 = 3.0;
 
-/// The outline of a control at rest (a radio button, a checkbox, a button),
-/// dark enough against the page to see without hovering.
-fn control_outline(dark: bool) -> Color32 {
-    if dark {
-        Color32::from_gray(150)
-    } else {
-        Color32::from_gray(110)
-    }
-}
-
 /// Unselected radio buttons and checkboxes are egui's faint grey blobs in
 /// the light theme: give every control at rest a visible outline, in both
 /// themes, so "not chosen" is as clear as "chosen".
@@ -90,7 +174,7 @@ fn outline_controls(ctx: &egui::Context) {
     for theme in [egui::Theme::Dark, egui::Theme::Light] {
         ctx.style_mut_of(theme, |style| {
             let dark = style.visuals.dark_mode;
-            style.visuals.widgets.inactive.bg_stroke = Stroke::new(1.0, control_outline(dark));
+            style.visuals.widgets.inactive.bg_stroke = Stroke::new(1.0, solid(dark));
         });
     }
 }
@@ -132,11 +216,11 @@ fn apply_text_styles(ctx: &egui::Context) {
                 ),
                 (
                     TextStyle::Button,
-                    FontId::new(15.0, FontFamily::Proportional),
+                    FontId::new(BUTTON_SIZE, FontFamily::Proportional),
                 ),
                 (
                     TextStyle::Small,
-                    FontId::new(12.5, FontFamily::Proportional),
+                    FontId::new(LABEL_SIZE, FontFamily::Proportional),
                 ),
                 (
                     TextStyle::Monospace,
@@ -147,5 +231,41 @@ fn apply_text_styles(ctx: &egui::Context) {
             style.spacing.item_spacing = egui::vec2(8.0, 6.0);
             style.spacing.button_padding = egui::vec2(8.0, 4.0);
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every theme-dependent colour a learner must see stands out 3:1 from
+    /// the page and from a canvas, in both themes.
+    #[test]
+    fn theme_colors_stand_out_in_both_themes() {
+        let ctx = egui::Context::default();
+        for theme in [egui::Theme::Dark, egui::Theme::Light] {
+            ctx.set_theme(theme);
+            let output = ctx.run_ui(egui::RawInput::default(), |ui| {
+                let visuals = ui.visuals().clone();
+                assert_eq!(visuals.dark_mode, theme == egui::Theme::Dark);
+                let colors = [
+                    ("accent", accent(ui)),
+                    ("good", good_color(ui)),
+                    ("error", error_color(ui)),
+                    ("solid", solid_color(ui)),
+                    ("robot", robot_color(ui)),
+                ];
+                for (name, c) in colors {
+                    for background in [visuals.panel_fill, visuals.extreme_bg_color] {
+                        let ratio = contrast(c, background);
+                        assert!(
+                            ratio >= CONTROL_CONTRAST,
+                            "{theme:?}: {name} has contrast {ratio:.2} against {background:?}"
+                        );
+                    }
+                }
+            });
+            output.drop_without_applying_deltas();
+        }
     }
 }

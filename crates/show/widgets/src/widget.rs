@@ -1,6 +1,6 @@
 //! What every widget is, and the small pieces widgets share.
 
-use egui::{Color32, RichText, Stroke};
+use egui::{RichText, Stroke};
 use kinolab_common::Feedback;
 
 pub use kinolab_schema::Params;
@@ -68,6 +68,12 @@ pub fn animated_scope<R>(
     inner.inner
 }
 
+/// Seconds since the last frame, for stepping an animation: at most 0.1 s,
+/// so a stalled tab does not jump ahead.
+pub fn frame_dt(ui: &egui::Ui) -> f64 {
+    f64::from(ui.input(|i| i.stable_dt).min(0.1))
+}
+
 /// Ask for the next frame of a running animation, unless the widget is
 /// scrolled out of view (then it pauses where it is).
 pub fn animate(ui: &egui::Ui) {
@@ -89,18 +95,15 @@ pub type Constructor = fn(&Params) -> Result<Box<dyn LabWidget>, String>;
 
 /// A visible, readable error in place of content that could not be shown.
 pub fn error_box(ui: &mut egui::Ui, title: &str, message: &str) {
+    let red = theme::error_color(ui);
     egui::Frame::new()
-        .fill(Color32::from_rgba_unmultiplied(200, 40, 40, 40))
-        .stroke(Stroke::new(1.5, Color32::from_rgb(200, 50, 50)))
+        .fill(red.gamma_multiply(0.16))
+        .stroke(Stroke::new(1.5, red))
         .corner_radius(6.0)
         .inner_margin(10.0)
         .show(ui, |ui| {
             ui.set_width(ui.available_width());
-            ui.label(
-                RichText::new(title)
-                    .strong()
-                    .color(Color32::from_rgb(220, 60, 60)),
-            );
+            ui.label(RichText::new(title).strong().color(red));
             ui.label(message);
         });
 }
@@ -112,7 +115,7 @@ pub fn feedback_ui(ui: &mut egui::Ui, feedback: Option<&Feedback>) {
         let color = if f.met {
             theme::good_color(ui)
         } else {
-            theme::warn_color(ui)
+            theme::error_color(ui)
         };
         let prefix = if f.met { "Solved. " } else { "" };
         ui.label(RichText::new(format!("{prefix}{}", f.message)).color(color));

@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::behaviour::world_view::draw_world;
 use crate::draw::labels::Labels;
-use crate::draw::{PlaneView, handle};
+use crate::draw::{PlaneView, canvas, handle};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -214,9 +214,8 @@ impl LabWidget for GridPlanner {
         let width = ui.available_width();
         let b = self.world.bounds;
         let height = (width * (b.height() / b.width()) as f32).clamp(200.0, 520.0);
-        let (response, painter) = ui.allocate_painter(vec2(width, height), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
         let rect = response.rect;
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let view = PlaneView::fit(rect.shrink(8.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
         // The world first (it paints the floor), the grid and search over it.
         draw_world(ui, &painter, &view, &self.world, 0.0);
@@ -239,9 +238,8 @@ impl LabWidget for GridPlanner {
                 self.setup.goal
             };
             let h = handle(ui, ui.scope_id().with(id), view.to_screen(at), 10.0, id);
-            if h.dragged() {
-                let d = view.delta_to_world(h.moved);
-                let moved = clamp([at[0] + d[0], at[1] + d[1]]);
+            if let Some(to) = h.dragged_to(&view, at) {
+                let moved = clamp(to);
                 if which == 0 {
                     self.setup.start = moved;
                 } else {
@@ -255,9 +253,9 @@ impl LabWidget for GridPlanner {
         marker(&painter, &mut labels, start, theme::accent(ui), "start");
         let goal = view.to_screen(self.setup.goal);
         marker(&painter, &mut labels, goal, theme::good_color(ui), "goal");
-        labels.draw(&painter, &egui::FontId::proportional(12.0));
+        labels.draw(&painter, &egui::FontId::proportional(theme::LABEL_SIZE));
         if let Some(shown) = &mut self.shown {
-            *shown += CELLS_PER_SECOND * f64::from(ui.input(|i| i.stable_dt).min(0.1));
+            *shown += CELLS_PER_SECOND * crate::widget::frame_dt(ui);
             crate::widget::animate(ui);
         }
         let text = match &searches {

@@ -36,12 +36,12 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     }))
 }
 
-fn route_colour(ui: &egui::Ui, r: Route) -> Color32 {
+fn route_color(ui: &egui::Ui, r: Route) -> Color32 {
     match r {
         Route::Unused => ui.visuals().weak_text_color(),
-        Route::Local => Color32::from_rgb(230, 120, 40),
-        Route::Global => Color32::from_rgb(70, 140, 230),
-        Route::Hybrid => Color32::from_rgb(60, 170, 90),
+        Route::Global => theme::ARCHITECTURE_COLORS[0],
+        Route::Local => theme::ARCHITECTURE_COLORS[1],
+        Route::Hybrid => theme::ARCHITECTURE_COLORS[2],
     }
 }
 
@@ -76,7 +76,7 @@ impl SensingRoutes {
         for (s, feeds) in self.wiring.feeds.iter().enumerate() {
             for (f, on) in feeds.iter().enumerate() {
                 if *on {
-                    let c = route_colour(ui, report.routes[s]);
+                    let c = route_color(ui, report.routes[s]);
                     painter.line_segment(
                         [left(s).right_center(), right(f).left_center()],
                         Stroke::new(2.5, c),
@@ -107,7 +107,7 @@ impl SensingRoutes {
                 r.left_center() + vec2(8.0, 0.0),
                 egui::Align2::LEFT_CENTER,
                 *name,
-                egui::FontId::proportional(13.0),
+                egui::FontId::proportional(theme::TITLE_SIZE),
                 ink,
             );
             let route = report.routes[s];
@@ -115,8 +115,8 @@ impl SensingRoutes {
                 r.right_center() - vec2(6.0, 0.0),
                 egui::Align2::RIGHT_CENTER,
                 route.name(),
-                egui::FontId::proportional(11.0),
-                route_colour(ui, route),
+                egui::FontId::proportional(theme::SMALL_SIZE),
+                route_color(ui, route),
             );
         }
         for (f, name) in FUNCTIONS.iter().enumerate() {
@@ -149,7 +149,7 @@ impl SensingRoutes {
                 r.left_center() + vec2(8.0, 0.0),
                 egui::Align2::LEFT_CENTER,
                 label,
-                egui::FontId::proportional(13.0),
+                egui::FontId::proportional(theme::TITLE_SIZE),
                 ink,
             );
         }
@@ -184,7 +184,7 @@ impl LabWidget for SensingRoutes {
                 ui.label(
                     RichText::new(route.name())
                         .small()
-                        .color(route_colour(ui, route)),
+                        .color(route_color(ui, route)),
                 );
             }
         });

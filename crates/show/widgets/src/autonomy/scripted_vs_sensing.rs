@@ -5,7 +5,7 @@ use egui::{Painter, Rect, RichText, Sense, Stroke, vec2};
 use kinolab_autonomy::{PickCell, PickTrial};
 use serde::{Deserialize, Serialize};
 
-use crate::draw::PlaneView;
+use crate::draw::{PlaneView, marks};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -77,7 +77,7 @@ impl ScriptedVsSensing {
             area.center_top() + vec2(0.0, 6.0),
             egui::Align2::CENTER_TOP,
             title,
-            egui::FontId::proportional(12.5),
+            egui::FontId::proportional(theme::LABEL_SIZE),
             ink,
         );
         // Both panels share one scale: the larger of the stray disc and 20 mm fits.
@@ -85,9 +85,7 @@ impl ScriptedVsSensing {
         let plot = Rect::from_min_max(area.min + vec2(0.0, 28.0), area.max - vec2(0.0, 6.0));
         let view = PlaneView::centred(plot, [0.0, 0.0], extent_m);
         let centre = view.to_screen([0.0, 0.0]);
-        let cross = Stroke::new(1.0, ink);
-        painter.line_segment([centre - vec2(6.0, 0.0), centre + vec2(6.0, 0.0)], cross);
-        painter.line_segment([centre - vec2(0.0, 6.0), centre + vec2(0.0, 6.0)], cross);
+        marks::plus(painter, centre, 6.0, Stroke::new(1.0, ink));
         if scripted {
             let reach = view.length(self.tolerance_mm / 1000.0);
             painter.circle_stroke(centre, reach, Stroke::new(1.5, theme::accent(ui)));
@@ -105,7 +103,7 @@ impl ScriptedVsSensing {
             let color = if ok {
                 theme::good_color(ui)
             } else {
-                theme::warn_color(ui)
+                theme::error_color(ui)
             };
             painter.circle_filled(view.to_screen(t.part), 4.0, color);
         }

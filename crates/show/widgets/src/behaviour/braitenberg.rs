@@ -9,7 +9,7 @@ use kinolab_behaviours::{Drive, Response};
 use kinolab_world::{Body, Light, Pose, Sensors, Sim, World};
 use serde::{Deserialize, Serialize};
 
-use super::world_view::{colour, draw_robot, draw_trail, draw_world};
+use super::world_view::{color, draw_robot, draw_trail, draw_world};
 use crate::draw::{PlaneView, handle};
 use crate::link;
 use crate::widget::{LabWidget, Params};
@@ -156,14 +156,14 @@ impl Vehicles {
                 &painter,
                 &view,
                 v.trail.iter().copied(),
-                colour(i).gamma_multiply(0.7),
+                color(i).gamma_multiply(0.7),
             );
             draw_robot(
                 &painter,
                 &view,
                 &v.sim.pose,
                 v.sim.body.radius(),
-                colour(i),
+                color(i),
                 ink,
             );
         }
@@ -178,10 +178,8 @@ impl Vehicles {
                 12.0,
                 &format!("Light {}", k + 1),
             );
-            if h.dragged() {
-                let d = view.delta_to_world(h.moved);
-                self.design.lights[k] =
-                    [(l[0] + d[0]).clamp(0.2, 7.8), (l[1] + d[1]).clamp(0.2, 5.8)];
+            if let Some([x, y]) = h.dragged_to(&view, l) {
+                self.design.lights[k] = [x.clamp(0.2, 7.8), y.clamp(0.2, 5.8)];
                 moved = true;
             }
         }
@@ -206,7 +204,7 @@ impl Vehicles {
                         w.character().vehicle(),
                         w.character().name()
                     ))
-                    .color(colour(i))
+                    .color(color(i))
                     .strong(),
                 );
                 ui.horizontal_wrapped(|ui| {

@@ -1,14 +1,14 @@
 //! Blend or choose: a frog and two flies. Drag the flies; the frog on the
 //! left adds the two pulls, the frog on the right lets the nearer fly win.
 
-use egui::{Color32, RichText, Sense, Stroke, vec2};
+use egui::{RichText, Sense, Stroke, vec2};
 use kinolab_behaviours::frog::{Combine, FLY_RADIUS, strike};
 use kinolab_world::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::draw::{PlaneView, handle};
-use crate::link;
+use crate::draw::{PlaneView, canvas, corner_text, handle};
 use crate::widget::{LabWidget, Params};
+use crate::{link, theme};
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 struct Flies {
@@ -36,11 +36,10 @@ pub fn create(_: &Params) -> Result<Box<dyn LabWidget>, String> {
 
 impl Frog {
     fn scene(&mut self, ui: &mut egui::Ui, how: Combine, width: f32, id: &str) {
-        let (rect, _) = ui.allocate_exact_size(vec2(width, width * 0.7), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, width * 0.7), Sense::hover());
+        let rect = response.rect;
         let view = PlaneView::fit(rect.shrink(6.0), POND.0, POND.1);
-        let painter = ui.painter_at(rect);
         let ink = ui.visuals().text_color();
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let flies: Vec<Vec2> = self
             .flies
             .at
@@ -50,28 +49,19 @@ impl Frog {
         let frog = Vec2::new(FROG[0], FROG[1]);
         let s = strike(frog, &flies, how);
         let at = view.to_screen(FROG);
-        painter.circle(
-            at,
-            16.0,
-            Color32::from_rgb(70, 160, 70),
-            Stroke::new(1.5, ink),
-        );
+        painter.circle(at, 16.0, theme::GREEN, Stroke::new(1.5, ink));
         for (i, f) in flies.iter().enumerate() {
             let p = view.to_screen([f.x, f.y]);
             let caught = s.is_some_and(|s| s.caught == Some(i));
-            let colour = if caught {
-                crate::theme::good_color(ui)
-            } else {
-                ink
-            };
+            let color = if caught { theme::good_color(ui) } else { ink };
             painter.circle_stroke(
                 p,
                 view.length(FLY_RADIUS),
-                Stroke::new(1.0, colour.gamma_multiply(0.5)),
+                Stroke::new(1.0, color.gamma_multiply(0.5)),
             );
-            painter.circle_filled(p, 5.0, colour);
+            painter.circle_filled(p, 5.0, color);
             for side in [-1.0, 1.0] {
-                painter.circle_stroke(p + vec2(side * 6.0, -4.0), 4.0, Stroke::new(1.0, colour));
+                painter.circle_stroke(p + vec2(side * 6.0, -4.0), 4.0, Stroke::new(1.0, color));
             }
             // The fly's pull on the frog: a unit arrow towards it.
             let pull = (f - frog).normalize();
@@ -89,10 +79,7 @@ impl Frog {
                 FROG[0] + s.direction[0] * s.reach,
                 FROG[1] + s.direction[1] * s.reach,
             ];
-            painter.line_segment(
-                [at, view.to_screen(tip)],
-                Stroke::new(4.0, Color32::from_rgb(220, 90, 110)),
-            );
+            painter.line_segment([at, view.to_screen(tip)], Stroke::new(4.0, theme::RED));
         }
         let base = ui.scope_id().with(id);
         for i in 0..2 {
@@ -104,12 +91,8 @@ impl Frog {
                 10.0,
                 &format!("Fly {}", i + 1),
             );
-            if h.dragged() {
-                let d = view.delta_to_world(h.moved);
-                self.flies.at[i] = [
-                    (f[0] + d[0]).clamp(POND.0[0], POND.1[0]),
-                    (f[1] + d[1]).clamp(0.1, POND.1[1]),
-                ];
+            if let Some([x, y]) = h.dragged_to(&view, f) {
+                self.flies.at[i] = [x.clamp(POND.0[0], POND.1[0]), y.clamp(0.1, POND.1[1])];
             }
         }
         let verdict = match (how, s.and_then(|s| s.caught)) {
@@ -122,13 +105,7 @@ impl Frog {
             }
             (Combine::Choose, None) => "Choose: missed.".to_owned(),
         };
-        painter.text(
-            rect.left_top() + vec2(8.0, 6.0),
-            egui::Align2::LEFT_TOP,
-            verdict,
-            egui::FontId::proportional(13.0),
-            ink,
-        );
+        corner_text(&painter, rect, 0, verdict, ink);
     }
 }
 

@@ -5,20 +5,17 @@ use kinolab_world::{Pose, Shape as Obstacle, World};
 
 use crate::draw::PlaneView;
 use crate::draw::marks::star;
+use crate::theme;
 
 /// The colour of behaviour `i` (the lab's palette).
-pub fn colour(i: usize) -> Color32 {
-    crate::theme::palette(i)
+pub fn color(i: usize) -> Color32 {
+    theme::palette(i)
 }
 
 /// The fence, the obstacles where they are at time `t`, lights and goal.
 pub fn draw_world(ui: &egui::Ui, painter: &Painter, view: &PlaneView, world: &World, t: f64) {
     let ink = ui.visuals().text_color();
-    let solid = if ui.visuals().dark_mode {
-        Color32::from_gray(120)
-    } else {
-        Color32::from_gray(110)
-    };
+    let solid = theme::solid_color(ui);
     let b = &world.bounds;
     let fence = egui::Rect::from_two_pos(
         view.to_screen([b.x_min, b.y_min]),
@@ -31,7 +28,7 @@ pub fn draw_world(ui: &egui::Ui, painter: &Painter, view: &PlaneView, world: &Wo
         Stroke::new(2.0, solid),
         egui::StrokeKind::Middle,
     );
-    let glass = Color32::from_rgb(120, 190, 230).gamma_multiply(0.7);
+    let glass = theme::GLASS.gamma_multiply(0.7);
     for (i, shape) in world.obstacles_at(t) {
         let see_through = world.obstacles.get(i).is_some_and(|o| o.glass);
         draw_obstacle(
@@ -43,7 +40,7 @@ pub fn draw_world(ui: &egui::Ui, painter: &Painter, view: &PlaneView, world: &Wo
     }
     for light in &world.lights {
         let at = view.to_screen([light.x, light.y]);
-        let glow = Color32::from_rgb(250, 200, 40);
+        let glow = theme::YELLOW;
         painter.circle_filled(at, 14.0, glow.gamma_multiply(0.25));
         painter.circle_filled(at, 6.0, glow);
         for k in 0..8 {
@@ -57,19 +54,19 @@ pub fn draw_world(ui: &egui::Ui, painter: &Painter, view: &PlaneView, world: &Wo
             painter,
             view.to_screen([g.x, g.y]),
             10.0,
-            Color32::from_rgb(60, 170, 90),
+            theme::good_color(ui),
             Stroke::new(1.0, ink),
         );
     }
 }
 
-fn draw_obstacle(painter: &Painter, view: &PlaneView, shape: &Obstacle, colour: Color32) {
+fn draw_obstacle(painter: &Painter, view: &PlaneView, shape: &Obstacle, color: Color32) {
     match shape {
         Obstacle::Disc { centre, radius } => {
             painter.circle_filled(
                 view.to_screen([centre.x, centre.y]),
                 view.length(*radius),
-                colour,
+                color,
             );
         }
         Obstacle::Wall {
@@ -82,18 +79,18 @@ fn draw_obstacle(painter: &Painter, view: &PlaneView, shape: &Obstacle, colour: 
                 view.to_screen([from.x, from.y]),
                 view.to_screen([to.x, to.y]),
             );
-            painter.line_segment([a, b], Stroke::new(width, colour));
-            painter.circle_filled(a, width / 2.0, colour);
-            painter.circle_filled(b, width / 2.0, colour);
+            painter.line_segment([a, b], Stroke::new(width, color));
+            painter.circle_filled(a, width / 2.0, color);
+            painter.circle_filled(b, width / 2.0, color);
         }
         Obstacle::Polygon { points } => {
             let pts: Vec<Pos2> = points.iter().map(|p| view.to_screen([p.x, p.y])).collect();
             if convex(&pts) {
-                painter.add(Shape::convex_polygon(pts, colour, Stroke::NONE));
+                painter.add(Shape::convex_polygon(pts, color, Stroke::NONE));
             } else {
                 let mut closed = pts.clone();
                 closed.push(pts[0]);
-                painter.add(Shape::line(closed, Stroke::new(3.0, colour)));
+                painter.add(Shape::line(closed, Stroke::new(3.0, color)));
             }
         }
     }
@@ -117,12 +114,12 @@ pub fn draw_robot(
     view: &PlaneView,
     pose: &Pose,
     radius: f64,
-    colour: Color32,
+    color: Color32,
     ink: Color32,
 ) {
     let at = view.to_screen([pose.x, pose.y]);
     let r = view.length(radius).max(4.0);
-    painter.circle(at, r, colour.gamma_multiply(0.55), Stroke::new(1.5, ink));
+    painter.circle(at, r, color.gamma_multiply(0.55), Stroke::new(1.5, ink));
     let nose = at + vec2(pose.theta.cos() as f32, -pose.theta.sin() as f32) * r;
     painter.line_segment([at, nose], Stroke::new(2.0, ink));
 }
@@ -132,10 +129,10 @@ pub fn draw_trail(
     painter: &Painter,
     view: &PlaneView,
     points: impl Iterator<Item = [f64; 2]>,
-    colour: Color32,
+    color: Color32,
 ) {
     let pts: Vec<Pos2> = points.map(|p| view.to_screen(p)).collect();
     if pts.len() > 1 {
-        painter.add(Shape::line(pts, Stroke::new(1.5, colour)));
+        painter.add(Shape::line(pts, Stroke::new(1.5, color)));
     }
 }

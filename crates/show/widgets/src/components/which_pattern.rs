@@ -59,12 +59,12 @@ impl LabWidget for WhichPattern {
                 }
             });
             if let Some(t) = &self.trials[i] {
-                let (mark, colour) = if t.works {
+                let (mark, color) = if t.works {
                     ("works", crate::theme::good_color(ui))
                 } else {
-                    ("does not do the job", crate::theme::warn_color(ui))
+                    ("does not do the job", crate::theme::error_color(ui))
                 };
-                ui.label(RichText::new(format!("{mark}: {}", t.note)).color(colour));
+                ui.label(RichText::new(format!("{mark}: {}", t.note)).color(color));
             }
         }
         if self.task {

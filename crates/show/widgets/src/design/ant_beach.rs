@@ -2,7 +2,7 @@
 //! the chosen body size, the core's numbers, and tortuosity against size
 //! for this beach.
 
-use egui::{Color32, RichText, Sense, Stroke, vec2};
+use egui::{RichText, Sense, Stroke, vec2};
 use egui_plot::{Line, Plot, PlotPoints, Points};
 use kinolab_common::Feedback;
 use kinolab_design::ant::{self, Beach, DEFAULT_PEBBLES, Walk};
@@ -76,25 +76,14 @@ impl AntBeach {
             [ant::LENGTH, ant::HALF_WIDTH],
         );
         let painter = ui.painter_at(rect);
-        let sand = if ui.visuals().dark_mode {
-            Color32::from_rgb(90, 80, 60)
-        } else {
-            Color32::from_rgb(236, 222, 190)
-        };
-        painter.rect_filled(rect, 6.0, sand);
+        painter.rect_filled(rect, 6.0, theme::sand_color(ui));
         let body = ant::ANT * self.setup.size;
         if let Some(beach) = &self.beach {
             for p in &beach.pebbles {
-                let matters = p.r > 0.25 * body;
-                let colour = if matters {
-                    Color32::from_gray(105)
-                } else {
-                    Color32::from_gray(175)
-                };
                 painter.circle_filled(
                     view.to_screen([p.x, p.y]),
                     view.length(p.r).max(0.8),
-                    colour,
+                    theme::pebble_color(p.r > 0.25 * body),
                 );
             }
         }
@@ -106,7 +95,7 @@ impl AntBeach {
                 painter.circle_stroke(
                     view.to_screen(last),
                     r,
-                    Stroke::new(1.5, Color32::from_rgb(200, 60, 40)),
+                    Stroke::new(1.5, theme::robot_color(ui)),
                 );
             }
         }
@@ -117,7 +106,7 @@ impl AntBeach {
                 .add(at, label, ui.visuals().text_color())
                 .toward(vec2(0.0, -1.0));
         }
-        labels.draw(&painter, &egui::FontId::proportional(11.0));
+        labels.draw(&painter, &egui::FontId::proportional(theme::SMALL_SIZE));
     }
 
     fn plot(&self, ui: &mut egui::Ui) {

@@ -2,9 +2,10 @@
 //! class graphs side by side; replace an industrial object and the classes
 //! whose code must change light up, counted by the core.
 
-use egui::{Align2, Color32, FontId, Pos2, RichText, Sense, Stroke, pos2, vec2};
+use egui::{Align2, FontId, Pos2, RichText, Sense, Stroke, pos2, vec2};
 use kinolab_design::churn::{Design, Layer, SWAPS, naive, stable};
 
+use crate::draw::canvas;
 use crate::theme;
 use crate::widget::{LabWidget, Params};
 
@@ -41,9 +42,8 @@ fn positions(design: &Design, rect: egui::Rect) -> Vec<(&'static str, Pos2)> {
 }
 
 fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&str>, width: f32) {
-    let (rect, _) = ui.allocate_exact_size(vec2(width, 230.0), Sense::hover());
-    let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+    let (response, painter) = canvas(ui, vec2(width, 230.0), Sense::hover());
+    let rect = response.rect;
     let at = positions(design, rect.shrink2(vec2(6.0, 6.0)));
     let pos = |name: &str| at.iter().find(|(n, _)| *n == name).map(|(_, p)| *p);
     let faint = ui.visuals().weak_text_color();
@@ -51,7 +51,7 @@ fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&st
         if let (Some(a), Some(b)) = (pos(user), pos(used)) {
             let hot = Some(*used) == swapped && edited.contains(user);
             let stroke = if hot {
-                Stroke::new(2.0, theme::warn_color(ui))
+                Stroke::new(2.0, theme::error_color(ui))
             } else {
                 Stroke::new(1.0, faint)
             };
@@ -62,20 +62,18 @@ fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&st
     for c in &design.classes {
         let Some(p) = pos(c.name) else { continue };
         let fill = match c.layer {
-            Layer::Logic => Color32::from_rgb(70, 140, 230).gamma_multiply(0.25),
-            Layer::Bo => Color32::from_rgb(60, 170, 90).gamma_multiply(0.3),
-            Layer::Io => Color32::from_rgb(200, 140, 30).gamma_multiply(0.3),
+            Layer::Logic => theme::BLUE.gamma_multiply(0.25),
+            Layer::Bo => theme::GREEN.gamma_multiply(0.3),
+            Layer::Io => theme::ORANGE.gamma_multiply(0.3),
         };
-        let font = FontId::proportional(10.5);
+        let font = FontId::proportional(theme::SMALL_SIZE);
         let size = painter
             .layout_no_wrap(c.name.to_owned(), font.clone(), ink)
             .size()
             + vec2(10.0, 6.0);
         let r = egui::Rect::from_center_size(p, size);
-        let outline = if edited.contains(&c.name) {
-            Stroke::new(2.5, theme::warn_color(ui))
-        } else if Some(c.name) == swapped {
-            Stroke::new(2.5, Color32::from_rgb(200, 60, 40))
+        let outline = if edited.contains(&c.name) || Some(c.name) == swapped {
+            Stroke::new(2.5, theme::error_color(ui))
         } else {
             Stroke::new(1.0, faint)
         };

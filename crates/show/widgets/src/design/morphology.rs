@@ -5,11 +5,12 @@
 //! them through the ports; switch the plugged-in closed forms off and the
 //! generic tree walk answers instead.
 
-use egui::{Color32, FontId, RichText, Sense, Stroke, pos2, vec2};
+use egui::{FontId, RichText, Sense, Stroke, pos2, vec2};
 use kinolab_common::display::fixed;
 use kinolab_design::morphology::{between, chain};
 use kinolab_mechanism::{Model, Pose};
 
+use crate::draw::canvas;
 use crate::draw::labels::Labels;
 use crate::theme;
 use crate::widget::{LabWidget, Params};
@@ -70,9 +71,8 @@ impl Morphology {
         }
         let tallest = rows.iter().copied().max().unwrap_or(1).max(1);
         let height = (tallest as f32 * 22.0 + 20.0).clamp(140.0, 420.0);
-        let (rect, _) = ui.allocate_exact_size(vec2(width, height), Sense::hover());
-        let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
+        let rect = response.rect;
         let at = |b: usize| {
             let x = rect.left()
                 + 40.0
@@ -90,7 +90,7 @@ impl Morphology {
             if self.dissolved.contains(&j) {
                 painter.add(egui::Shape::dashed_line(
                     &[a, b],
-                    Stroke::new(1.5, Color32::from_rgb(210, 70, 60)),
+                    Stroke::new(1.5, theme::error_color(ui)),
                     4.0,
                     4.0,
                 ));
@@ -107,26 +107,26 @@ impl Morphology {
             labels.reserve(egui::Rect::from_center_size(at(b), vec2(10.0, 10.0)));
         }
         for b in 0..n {
-            let colour = if chosen.contains(&b) {
+            let color = if chosen.contains(&b) {
                 theme::accent(ui)
             } else if cut(b) {
                 faint
             } else {
-                Color32::from_rgb(110, 110, 120)
+                theme::solid_color(ui)
             };
-            painter.circle_filled(at(b), 5.0, colour);
+            painter.circle_filled(at(b), 5.0, color);
             if n <= 14 || chosen.contains(&b) {
                 let name = model.bodies()[b].name.as_str();
                 labels.add(at(b), name, ink).toward(vec2(1.0, 0.0));
             }
         }
-        labels.draw(&painter, &FontId::proportional(10.5));
+        labels.draw(&painter, &FontId::proportional(theme::SMALL_SIZE));
         for f in model.frames() {
             let p = at(f.body) + vec2(0.0, 9.0);
             painter.rect_filled(
                 egui::Rect::from_center_size(p, vec2(5.0, 5.0)),
                 1.0,
-                Color32::from_rgb(60, 170, 90),
+                theme::GREEN,
             );
         }
     }
@@ -208,7 +208,7 @@ impl Morphology {
             Some(t) => ui.label(RichText::new(format!("T(from → to): {}", describe(&t))).strong()),
             None => ui.label(
                 RichText::new("No transform: a dissolved pair lies on the path between them.")
-                    .color(theme::warn_color(ui)),
+                    .color(theme::error_color(ui)),
             ),
         };
         let commands = model.command_names();

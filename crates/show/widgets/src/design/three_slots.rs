@@ -3,7 +3,7 @@
 //! combination fills in a cell per frame; the design view lights the
 //! analysis pattern whose slot changed.
 
-use egui::{Color32, RichText, Sense, Stroke, vec2};
+use egui::{RichText, Sense, Stroke, vec2};
 use kinolab_behaviours::run::RunReport;
 use kinolab_common::Feedback;
 use kinolab_design::slots::{BEHAVIOURS, BODIES, Outcome, PATTERNS, WORLDS, outcome, setup};
@@ -152,12 +152,12 @@ impl ThreeSlots {
         let painter = ui.painter_at(rect);
         draw_world(ui, &painter, &view, world, 0.0);
         if let Some((_, report)) = &self.run {
-            let colour = theme::accent(ui);
+            let accent = theme::accent(ui);
             draw_trail(
                 &painter,
                 &view,
                 report.samples.iter().map(|p| [p.motion.x, p.motion.y]),
-                colour,
+                accent,
             );
             if let Some(last) = report.samples.last() {
                 let pose = Pose::new(last.motion.x, last.motion.y, last.motion.theta());
@@ -166,7 +166,7 @@ impl ThreeSlots {
                     &view,
                     &pose,
                     setup.body.radius(),
-                    colour,
+                    accent,
                     ui.visuals().text_color(),
                 );
             }
@@ -179,7 +179,7 @@ impl ThreeSlots {
             for (k, (pattern, slot, participants)) in PATTERNS.iter().enumerate() {
                 let lit = self.changed == Some(k);
                 let stroke = if lit {
-                    Stroke::new(2.5, theme::warn_color(ui))
+                    Stroke::new(2.5, theme::error_color(ui))
                 } else {
                     Stroke::new(1.0, ui.visuals().weak_text_color())
                 };
@@ -191,13 +191,13 @@ impl ThreeSlots {
                         ui.vertical(|ui| {
                             ui.label(RichText::new(format!("{pattern} ({slot})")).strong());
                             for p in *participants {
-                                ui.label(RichText::new(*p).size(12.0));
+                                ui.label(RichText::new(*p).size(theme::LABEL_SIZE));
                             }
                             if lit {
                                 ui.label(
                                     RichText::new("changed")
-                                        .color(theme::warn_color(ui))
-                                        .size(12.0),
+                                        .color(theme::error_color(ui))
+                                        .size(theme::LABEL_SIZE),
                                 );
                             }
                         });
@@ -238,11 +238,8 @@ impl ThreeSlots {
                                     );
                                 }
                                 Some(o) => {
-                                    ui.label(
-                                        RichText::new("fails")
-                                            .color(Color32::from_rgb(210, 70, 60)),
-                                    )
-                                    .on_hover_text(&o.why);
+                                    ui.label(RichText::new("fails").color(theme::error_color(ui)))
+                                        .on_hover_text(&o.why);
                                 }
                                 None => {
                                     ui.label("…");

@@ -3,6 +3,8 @@
 
 use egui::{Id, Pos2, Rect, Response, Sense, Vec2, vec2};
 
+use super::PlaneView;
+
 /// A handle's response and how far it moved this frame (by pointer or,
 /// when it has keyboard focus, by the arrow keys).
 #[derive(Debug)]
@@ -19,6 +21,15 @@ impl Handle {
 
     pub fn clicked(&self) -> bool {
         self.response.clicked()
+    }
+
+    /// Where the world point `from` under this handle was dragged to this
+    /// frame, through `view`; `None` when it did not move.
+    pub fn dragged_to(&self, view: &PlaneView, from: [f64; 2]) -> Option<[f64; 2]> {
+        self.dragged().then(|| {
+            let d = view.delta_to_world(self.moved);
+            [from[0] + d[0], from[1] + d[1]]
+        })
     }
 
     /// Whether the learner is holding it (pointer down on it).

@@ -1,4 +1,4 @@
-//! Small marks plane drawings share: dashed circles, crosses, stars,
+//! Small marks plane drawings share: dashed circles, crosses, pluses, stars,
 //! and an arrow whose head keeps a readable size.
 
 use egui::{Color32, Painter, Pos2, Shape, Stroke, Vec2, vec2};
@@ -19,6 +19,12 @@ pub fn dashed_circle(painter: &Painter, centre: Pos2, radius: f32, stroke: Strok
 pub fn cross(painter: &Painter, at: Pos2, size: f32, stroke: Stroke) {
     painter.line_segment([at + vec2(-size, -size), at + vec2(size, size)], stroke);
     painter.line_segment([at + vec2(-size, size), at + vec2(size, -size)], stroke);
+}
+
+/// A + of half-size `size`.
+pub fn plus(painter: &Painter, at: Pos2, size: f32, stroke: Stroke) {
+    painter.line_segment([at - vec2(size, 0.0), at + vec2(size, 0.0)], stroke);
+    painter.line_segment([at - vec2(0.0, size), at + vec2(0.0, size)], stroke);
 }
 
 /// A five-pointed star (a goal).

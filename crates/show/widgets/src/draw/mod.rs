@@ -1,9 +1,11 @@
-//! The drawing pieces every widget shares: one world↔screen view for
+//! The drawing pieces every widget shares: the canvas a drawing opens on
+//! ([`canvas()`]), one world↔screen view for
 //! plane drawings ([`PlaneView`]), draggable handles with accessible names
 //! ([`handle`]), grids and axes, a small 3D camera ([`scene3d`]),
 //! labels that keep out of each other's way ([`labels`]), and small marks
 //! (arrows, crosses, stars, dashed circles: [`marks`]).
 
+mod canvas;
 mod grid;
 mod handle;
 pub mod labels;
@@ -12,6 +14,7 @@ pub mod plot;
 pub mod scene3d;
 mod view;
 
+pub use canvas::{canvas, canvas_3d, corner_text};
 pub use grid::{axes, grid, nice_step};
 pub use handle::{Handle, handle};
 pub use view::{PlaneView, local, placed, placed_dir};

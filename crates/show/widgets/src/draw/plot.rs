@@ -12,7 +12,7 @@ pub fn series_color(k: usize) -> Color32 {
 }
 
 /// The colour of reference marks (a "now" line, a fixed level).
-pub const REFERENCE: Color32 = Color32::GRAY;
+pub const REFERENCE: Color32 = crate::theme::NEUTRAL;
 
 /// A legend row: a short stroke in each entry's colour, then its name;
 /// wraps on a narrow column.

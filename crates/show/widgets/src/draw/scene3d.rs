@@ -170,13 +170,6 @@ impl Camera {
     }
 }
 
-/// Colours of the x, y and z axes.
-pub const AXIS_COLOURS: [Color32; 3] = [
-    Color32::from_rgb(220, 60, 60),
-    Color32::from_rgb(40, 170, 70),
-    Color32::from_rgb(60, 110, 230),
-];
-
 /// Draw a frame's three axes, `length` metres long; returns them on
 /// screen, for labels to keep clear of.
 pub fn draw_frame(
@@ -190,11 +183,11 @@ pub fn draw_frame(
 ) -> [[Pos2; 2]; 3] {
     let (o, _) = camera.project(rect, &pose.translation.vector);
     let mut segments = [[o, o]; 3];
-    for (k, colour) in AXIS_COLOURS.iter().enumerate() {
+    for (k, color) in crate::theme::AXIS_COLORS.iter().enumerate() {
         let mut axis = Vector3::zeros();
         axis[k] = length;
         let (tip, _) = camera.project(rect, &(pose.rotation * axis + pose.translation.vector));
-        painter.line_segment([o, tip], Stroke::new(width, colour.gamma_multiply(alpha)));
+        painter.line_segment([o, tip], Stroke::new(width, color.gamma_multiply(alpha)));
         segments[k] = [o, tip];
     }
     segments
@@ -219,8 +212,8 @@ pub fn draw_capsule(
 }
 
 /// A faint ground grid in the x–y plane (or the line z = 0 from the side).
-pub fn draw_grid(painter: &egui::Painter, camera: &Camera, rect: Rect, colour: Color32) {
-    let stroke = Stroke::new(1.0, colour);
+pub fn draw_grid(painter: &egui::Painter, camera: &Camera, rect: Rect, color: Color32) {
+    let stroke = Stroke::new(1.0, color);
     let step = nice_step(camera.extent / camera.zoom as f64);
     let (c, n) = grid_centre(camera, rect, step);
     let line = |a: Vector3<f64>, b: Vector3<f64>| {

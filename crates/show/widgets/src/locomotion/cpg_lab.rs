@@ -14,6 +14,7 @@ use kinolab_locomotion::network::{Model, Network, State};
 use kinolab_locomotion::speed::quadruped_pace;
 use serde::{Deserialize, Serialize};
 
+use crate::draw::canvas;
 use crate::draw::plot::{series_legend, series_lines};
 use crate::widget::{LabWidget, Params, feedback_ui};
 use crate::{link, theme};
@@ -230,9 +231,8 @@ impl CpgLab {
     /// The oscillators as dots on circles, and the feet below them.
     fn dials(&self, ui: &mut egui::Ui) {
         let width = ui.available_width();
-        let (rect, _) = ui.allocate_exact_size(vec2(width, 170.0), Sense::hover());
-        let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+        let (response, painter) = canvas(ui, vec2(width, 170.0), Sense::hover());
+        let rect = response.rect;
         let ink = ui.visuals().text_color();
         let beta = kinolab_locomotion::named(&self.setup.gait).map_or(0.5, |g| g.duty_factor);
         let r = (width / 12.0).min(38.0);
@@ -250,22 +250,22 @@ impl CpgLab {
                 centre,
                 egui::Align2::CENTER_CENTER,
                 *name,
-                egui::FontId::proportional(13.0),
+                egui::FontId::proportional(theme::TITLE_SIZE),
                 ink,
             );
             let stance = Network::in_stance(&self.state, i, beta);
             let foot = centre + vec2(0.0, r + 34.0);
-            let colour = if stance {
+            let color = if stance {
                 theme::good_color(ui)
             } else {
                 ink.gamma_multiply(0.25)
             };
-            painter.circle(foot, 9.0, colour, Stroke::new(1.0, ink));
+            painter.circle(foot, 9.0, color, Stroke::new(1.0, ink));
             painter.text(
                 foot + vec2(0.0, 14.0),
                 egui::Align2::CENTER_TOP,
                 if stance { "stance" } else { "swing" },
-                egui::FontId::proportional(11.0),
+                egui::FontId::proportional(theme::SMALL_SIZE),
                 ink,
             );
         }
@@ -318,7 +318,7 @@ impl LabWidget for CpgLab {
             feedback_ui(ui, self.feedback.as_ref());
         }
         if self.playing {
-            let dt = f64::from(ui.input(|i| i.stable_dt).min(0.1));
+            let dt = crate::widget::frame_dt(ui);
             self.advance(dt);
             crate::widget::animate(ui);
         }

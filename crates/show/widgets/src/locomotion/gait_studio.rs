@@ -11,8 +11,8 @@ use kinolab_locomotion::{Gait, named, named_ids, static_stability};
 use serde::{Deserialize, Serialize};
 
 use super::{draw_foot, draw_support};
-use crate::draw::PlaneView;
 use crate::draw::labels::Labels;
+use crate::draw::{PlaneView, canvas};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -179,7 +179,7 @@ fn top_view(ui: &egui::Ui, painter: &Painter, rect: Rect, gait: &Gait, now: &Ins
     let stability = static_stability(gait.com, &now.feet).ok();
     let color = match now.margin {
         Some(m) if m > 0.0 => theme::good_color(ui),
-        _ => theme::warn_color(ui),
+        _ => theme::error_color(ui),
     };
     let mut labels = Labels::default();
     if let Some(s) = &stability {
@@ -220,12 +220,12 @@ fn top_view(ui: &egui::Ui, painter: &Painter, rect: Rect, gait: &Gait, now: &Ins
         Stroke::new(1.5, Color32::WHITE),
     );
     labels.reserve(Rect::from_center_size(com, vec2(16.0, 16.0)));
-    labels.draw(painter, &FontId::proportional(12.0));
+    labels.draw(painter, &FontId::proportional(theme::LABEL_SIZE));
     painter.text(
         rect.right_top() + vec2(-8.0, 8.0),
         Align2::RIGHT_TOP,
         "from above, front to the right →",
-        FontId::proportional(11.0),
+        FontId::proportional(theme::SMALL_SIZE),
         ui.visuals().weak_text_color(),
     );
 }
@@ -253,7 +253,7 @@ fn cycle_view(
             Pos2::new(rect.left() + 2.0, y + row_h / 2.0),
             Align2::LEFT_CENTER,
             &leg.name,
-            FontId::proportional(11.0),
+            FontId::proportional(theme::SMALL_SIZE),
             ink,
         );
         // Stance runs from σ = 1 − β to 1, i.e. τ from φ + 1 − β to φ + 1.
@@ -285,10 +285,10 @@ fn cycle_view(
         Stroke::new(1.0, weak),
     );
     let good = theme::good_color(ui);
-    let warn = theme::warn_color(ui);
+    let bad = theme::error_color(ui);
     for pair in curve.windows(2) {
         if let (Some(a), Some(b)) = (pair[0].margin, pair[1].margin) {
-            let color = if a.min(b) > 0.0 { good } else { warn };
+            let color = if a.min(b) > 0.0 { good } else { bad };
             painter.line_segment(
                 [
                     Pos2::new(x_of(pair[0].tau), y_of(a)),
@@ -298,32 +298,35 @@ fn cycle_view(
             );
         }
     }
-    painter.text(
+    let tick = |at: Pos2, align: Align2, text: &str| {
+        painter.text(
+            at,
+            align,
+            text,
+            FontId::proportional(theme::TINY_SIZE),
+            weak,
+        );
+    };
+    tick(
         Pos2::new(rect.left() + 2.0, y_of(0.0)),
         Align2::LEFT_CENTER,
         "S = 0",
-        FontId::proportional(10.0),
-        weak,
     );
-    painter.text(
+    tick(
         Pos2::new(plot.left(), rect.bottom() - 2.0),
         Align2::LEFT_BOTTOM,
         "τ = 0",
-        FontId::proportional(10.0),
-        weak,
     );
-    painter.text(
+    tick(
         Pos2::new(plot.right(), rect.bottom() - 2.0),
         Align2::RIGHT_BOTTOM,
         "1",
-        FontId::proportional(10.0),
-        weak,
     );
     painter.text(
         Pos2::new(plot.right() - 4.0, plot.bottom()),
         Align2::RIGHT_BOTTOM,
         format!("margin S, ±{} cm", fixed(span * 100.0, 1)),
-        FontId::proportional(10.0),
+        FontId::proportional(theme::SMALL_SIZE),
         weak,
     );
     let cursor = x_of(tau);
@@ -382,7 +385,7 @@ impl LabWidget for GaitStudio {
             return;
         };
         if self.playing {
-            let dt = f64::from(ui.input(|i| i.stable_dt).min(0.1));
+            let dt = crate::widget::frame_dt(ui);
             self.setup.tau = (self.setup.tau + dt / CYCLE_SECONDS)
                 .rem_euclid(1.0)
                 .min(0.999);
@@ -398,9 +401,8 @@ impl LabWidget for GaitStudio {
         } else {
             (width, 300.0)
         };
-        let (response, painter) = ui.allocate_painter(vec2(w, h), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(w, h), Sense::hover());
         let rect = response.rect;
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let (a, b) = if narrow {
             let (top, bottom) = rect.split_top_bottom_at_fraction(0.5);
             (top, bottom)
@@ -433,7 +435,7 @@ impl LabWidget for GaitStudio {
         let color = if ok {
             theme::good_color(ui)
         } else {
-            theme::warn_color(ui)
+            theme::error_color(ui)
         };
         ui.label(RichText::new(text).strong().color(color));
         ui.horizontal_wrapped(|ui| {

@@ -1,6 +1,6 @@
 //! How fast the number of leg-event sequences grows with the number of legs.
 
-use egui::{Color32, RichText, Stroke, pos2, vec2};
+use egui::{RichText, Stroke, pos2, vec2};
 use kinolab_common::display::group_digits;
 use kinolab_locomotion::leg_events;
 
@@ -89,7 +89,7 @@ impl LegEvents {
                 pos2(bar.center().x, rect.bottom() + 2.0),
                 egui::Align2::CENTER_TOP,
                 k.to_string(),
-                egui::FontId::proportional(11.0),
+                egui::FontId::proportional(theme::SMALL_SIZE),
                 text,
             );
         }
@@ -101,8 +101,8 @@ impl LegEvents {
             rect.left_top() - vec2(26.0, 14.0),
             egui::Align2::LEFT_TOP,
             "log₁₀ N  (each step up is ×10)",
-            egui::FontId::proportional(11.0),
-            Color32::GRAY,
+            egui::FontId::proportional(theme::SMALL_SIZE),
+            ui.visuals().weak_text_color(),
         );
         if let Some(pos) = response.interact_pointer_pos()
             && response.clicked()

@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{draw_foot, draw_support};
 use crate::draw::labels::Labels;
-use crate::draw::{PlaneView, handle};
+use crate::draw::{PlaneView, canvas, handle, marks};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -132,7 +132,7 @@ impl SupportPolygon {
         labels.reserve(Rect::from_center_size(com, vec2(20.0, 20.0)));
         self.draw_feet(painter, &mut labels, view, ink);
         draw_com(painter, com, theme::accent(ui));
-        labels.draw(painter, &egui::FontId::proportional(12.0));
+        labels.draw(painter, &egui::FontId::proportional(theme::LABEL_SIZE));
     }
 
     fn draw_feet(&self, painter: &Painter, labels: &mut Labels, view: &PlaneView, ink: Color32) {
@@ -147,16 +147,14 @@ impl SupportPolygon {
 
 fn draw_com(painter: &Painter, at: Pos2, color: Color32) {
     painter.circle(at, 8.0, color, Stroke::new(1.5, Color32::WHITE));
-    let white = Stroke::new(1.5, Color32::WHITE);
-    painter.line_segment([at - vec2(5.0, 0.0), at + vec2(5.0, 0.0)], white);
-    painter.line_segment([at - vec2(0.0, 5.0), at + vec2(0.0, 5.0)], white);
+    marks::plus(painter, at, 5.0, Stroke::new(1.5, Color32::WHITE));
 }
 
 fn verdict_color(ui: &egui::Ui, s: &Stability) -> Color32 {
     if s.stable {
         theme::good_color(ui)
     } else {
-        theme::warn_color(ui)
+        theme::error_color(ui)
     }
 }
 
@@ -183,14 +181,13 @@ fn verdict_text(verdict: Option<&Stability>) -> String {
 impl LabWidget for SupportPolygon {
     fn ui(&mut self, ui: &mut egui::Ui) {
         let width = ui.available_width().min(720.0);
-        let (response, painter) = ui.allocate_painter(vec2(width, 320.0), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, 320.0), Sense::hover());
         let rect = response.rect;
         let view = PlaneView::fit(
             rect,
             [-VIEW_HALF_WIDTH, -VIEW_HALF_HEIGHT],
             [VIEW_HALF_WIDTH, VIEW_HALF_HEIGHT],
         );
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         self.input(ui, &view);
         let verdict = static_stability(self.stance.com, &self.stance.grounded()).ok();
         self.draw(ui, &painter, &view, verdict.as_ref());
@@ -198,12 +195,12 @@ impl LabWidget for SupportPolygon {
             rect.right_top() + vec2(-10.0, 10.0),
             egui::Align2::RIGHT_TOP,
             "seen from above, front to the right →",
-            egui::FontId::proportional(11.0),
+            egui::FontId::proportional(theme::SMALL_SIZE),
             ui.visuals().weak_text_color(),
         );
         let color = verdict
             .as_ref()
-            .map_or(theme::warn_color(ui), |s| verdict_color(ui, s));
+            .map_or(theme::error_color(ui), |s| verdict_color(ui, s));
         ui.label(
             RichText::new(verdict_text(verdict.as_ref()))
                 .strong()

@@ -11,7 +11,8 @@ use kinolab_mechanism::Vector3;
 use serde::{Deserialize, Serialize};
 
 use crate::draw::plot::{REFERENCE, series_legend, series_lines};
-use crate::draw::scene3d::{Camera, ViewKind, draw_capsule, draw_grid};
+use crate::draw::scene3d::{Camera, ViewKind, draw_capsule};
+use crate::draw::{canvas_3d, corner_text};
 use crate::widget::{LabWidget, Params};
 
 /// The plotted joints of the left front leg, in the model's order.
@@ -139,15 +140,8 @@ impl HexapodWalker {
 
     fn scene(&mut self, ui: &mut egui::Ui) {
         let size = vec2(ui.available_width().min(760.0), 340.0);
-        let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
+        let (response, painter) = canvas_3d(ui, size, Sense::click_and_drag(), &self.camera);
         let rect = response.rect;
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
-        draw_grid(
-            &painter,
-            &self.camera,
-            rect,
-            ui.visuals().text_color().gamma_multiply(0.08),
-        );
         self.camera.handle(ui, &response, true);
         let (Some(w), Some(step)) = (&self.walker, &self.step) else {
             return;
@@ -163,10 +157,10 @@ impl HexapodWalker {
             .ok()
             .map(|s| s.margin);
         let good = margin.is_some_and(|m| m > 0.0);
-        let colour = if good {
+        let color = if good {
             theme::good_color(ui)
         } else {
-            theme::warn_color(ui)
+            theme::error_color(ui)
         };
         let pts: Vec<egui::Pos2> = hull
             .iter()
@@ -175,14 +169,14 @@ impl HexapodWalker {
         if pts.len() >= 3 {
             painter.add(egui::Shape::convex_polygon(
                 pts,
-                colour.gamma_multiply(0.2),
-                Stroke::new(1.5, colour),
+                color.gamma_multiply(0.2),
+                Stroke::new(1.5, color),
             ));
         } else if pts.len() == 2 {
-            painter.line_segment([pts[0], pts[1]], Stroke::new(2.0, colour));
+            painter.line_segment([pts[0], pts[1]], Stroke::new(2.0, color));
         }
         let (com, _) = cam.project(rect, &Vector3::zeros());
-        painter.circle_filled(com, 5.0, colour);
+        painter.circle_filled(com, 5.0, color);
         let Ok(placed) = w.model.place(&step.q) else {
             return;
         };
@@ -205,7 +199,7 @@ impl HexapodWalker {
             let (p, _) = cam.project(rect, &Vector3::from(*t));
             let missed = step.errors[i] > kinolab_locomotion::walker::REACHED;
             let c = if missed {
-                theme::warn_color(ui)
+                theme::error_color(ui)
             } else {
                 theme::accent(ui)
             };
@@ -219,22 +213,10 @@ impl HexapodWalker {
             ),
             None => "no foot on the ground".to_owned(),
         };
-        painter.text(
-            rect.left_top() + vec2(8.0, 6.0),
-            egui::Align2::LEFT_TOP,
-            text,
-            egui::FontId::proportional(13.0),
-            ink,
-        );
+        corner_text(&painter, rect, 0, text, ink);
         if !step.unreachable.is_empty() {
             let text = format!("out of reach: {}", step.unreachable.join(", "));
-            painter.text(
-                rect.left_top() + vec2(8.0, 24.0),
-                egui::Align2::LEFT_TOP,
-                text,
-                egui::FontId::proportional(13.0),
-                theme::warn_color(ui),
-            );
+            corner_text(&painter, rect, 1, text, theme::error_color(ui));
         }
     }
 
@@ -275,7 +257,7 @@ impl LabWidget for HexapodWalker {
         ui.label(RichText::new("Drag to turn the view. Rings: where each foot should be (red when the leg cannot reach it); the polygon: the stance feet; the dot: the centre of mass.").small());
         self.plot(ui);
         if self.playing {
-            let dt = f64::from(ui.input(|i| i.stable_dt).min(0.1));
+            let dt = crate::widget::frame_dt(ui);
             self.advance((self.tau + dt * self.setup.rate).rem_euclid(1.0));
             crate::widget::animate(ui);
         }

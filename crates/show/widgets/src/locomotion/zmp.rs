@@ -10,9 +10,9 @@ use kinolab_common::display::fixed;
 use kinolab_locomotion::balance::{CartTable, Recovery};
 use serde::{Deserialize, Serialize};
 
-use crate::draw::PlaneView;
 use crate::draw::labels::Labels;
 use crate::draw::plot::{REFERENCE, series_legend, series_lines};
+use crate::draw::{PlaneView, canvas};
 use crate::widget::{LabWidget, Params, feedback_ui};
 use crate::{link, theme};
 
@@ -105,9 +105,8 @@ impl ZmpCartTable {
     fn side_view(&self, ui: &mut egui::Ui) {
         let width = ui.available_width();
         let height = 280.0;
-        let (response, painter) = ui.allocate_painter(vec2(width, height), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
         let rect = response.rect;
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let z = self.setup.height;
         let view = PlaneView::fit(rect.shrink(12.0), [-0.35, -0.08], [0.65, z + 0.12]);
         let ink = ui.visuals().text_color();
@@ -122,27 +121,27 @@ impl ZmpCartTable {
         let body = view.to_screen([x, z]);
         let ankle = view.to_screen([0.0, 0.03]);
         painter.line_segment([ankle, body], Stroke::new(3.0, ink));
-        let colour = if fallen {
-            theme::warn_color(ui)
+        let color = if fallen {
+            theme::error_color(ui)
         } else {
             theme::accent(ui)
         };
-        painter.circle(body, 14.0, colour, Stroke::new(1.5, ink));
+        painter.circle(body, 14.0, color, Stroke::new(1.5, ink));
         // Marks on the ground, their names below it, clear of each other.
         let mut labels = Labels::default();
-        let mut mark = |at: f64, colour: Color32, text: &str| {
+        let mut mark = |at: f64, color: Color32, text: &str| {
             let p = view.to_screen([at, 0.0]);
-            painter.circle_filled(p, 5.0, colour);
+            painter.circle_filled(p, 5.0, color);
             labels.reserve(egui::Rect::from_center_size(p, vec2(10.0, 10.0)));
             labels
-                .add(p, text, colour)
+                .add(p, text, color)
                 .toward(vec2(0.0, 1.0))
                 .beyond(4.0);
         };
         mark(zmp, theme::good_color(ui), "ZMP");
         if s.is_some() {
             let at = wanted.clamp(-0.35, 0.65);
-            mark(at, theme::warn_color(ui), "capture point");
+            mark(at, theme::error_color(ui), "capture point");
         }
         let com_ground: Pos2 = view.to_screen([x, 0.0]);
         painter.line_segment(
@@ -150,7 +149,7 @@ impl ZmpCartTable {
             Stroke::new(1.0, ink.gamma_multiply(0.3)),
         );
         labels.avoid_line(body, com_ground);
-        labels.draw(&painter, &egui::FontId::proportional(12.0));
+        labels.draw(&painter, &egui::FontId::proportional(theme::LABEL_SIZE));
     }
 
     fn plot(&self, ui: &mut egui::Ui) {
@@ -193,7 +192,7 @@ impl LabWidget for ZmpCartTable {
         ui.label(RichText::new(self.verdict()).strong());
         self.plot(ui);
         if self.playing {
-            self.t += f64::from(ui.input(|i| i.stable_dt).min(0.1));
+            self.t += crate::widget::frame_dt(ui);
             if self.t >= DURATION {
                 self.t = DURATION;
                 self.playing = false;

@@ -10,9 +10,11 @@ use kinolab_mechanism::dh::{Convention, link, steps};
 use kinolab_mechanism::exercise::Task;
 use kinolab_mechanism::{Pose, Vector3};
 
+use crate::draw::canvas;
 use crate::draw::labels::Labels;
-use crate::draw::scene3d::{AXIS_COLOURS, Camera, ViewKind, draw_frame, draw_grid};
+use crate::draw::scene3d::{Camera, ViewKind, draw_frame, draw_grid};
 use crate::link as state_link;
+use crate::theme;
 use crate::widget::{LabWidget, Params, feedback_ui};
 
 struct DhLink {
@@ -160,13 +162,13 @@ impl DhLink {
             "i",
             ink,
         );
-        labels.draw(painter, &egui::FontId::proportional(12.0));
+        labels.draw(painter, &egui::FontId::proportional(theme::LABEL_SIZE));
         frame_i
     }
 
     fn dashed_frame(&self, painter: &Painter, rect: Rect, pose: &Pose) {
         let (o, _) = self.camera.project(rect, &pose.translation.vector);
-        for (k, colour) in AXIS_COLOURS.iter().enumerate() {
+        for (k, color) in theme::AXIS_COLORS.iter().enumerate() {
             let mut axis = Vector3::zeros();
             axis[k] = 0.25;
             let (tip, _) = self
@@ -174,7 +176,7 @@ impl DhLink {
                 .project(rect, &(pose.rotation * axis + pose.translation.vector));
             painter.extend(egui::Shape::dashed_line(
                 &[o, tip],
-                Stroke::new(2.0, colour.gamma_multiply(0.7)),
+                Stroke::new(2.0, color.gamma_multiply(0.7)),
                 5.0,
                 4.0,
             ));
@@ -213,16 +215,15 @@ impl LabWidget for DhLink {
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         let size = vec2(ui.available_width().min(720.0), 300.0);
-        let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
+        let (response, painter) = canvas(ui, size, Sense::click_and_drag());
         let rect = response.rect;
         self.camera.handle(ui, &response, true);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let frame_i = self.scene(ui, &painter, rect);
         painter.text(
             rect.left_bottom() + vec2(8.0, -8.0),
             egui::Align2::LEFT_BOTTOM,
             "x red, y green, z blue · drag to turn the view",
-            egui::FontId::proportional(12.0),
+            egui::FontId::proportional(theme::LABEL_SIZE),
             ui.visuals().weak_text_color(),
         );
         ui.label("The link's transform, frame i seen from frame i−1:");

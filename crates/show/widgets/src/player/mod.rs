@@ -278,14 +278,22 @@ impl<S: Simulation> Player<S> {
         self.events.retain(|(at, _)| *at <= k);
         self.events.push((k, event));
         self.checkpoints.truncate(k / self.spacing + 1);
-        if k.is_multiple_of(self.spacing) {
-            if let Some(last) = self.checkpoints.last_mut() {
-                *last = run.clone();
-            }
+        if k.is_multiple_of(self.spacing)
+            && let Some(last) = self.checkpoints.last_mut()
+        {
+            *last = run.clone();
         }
         self.live = run;
         self.shown = None;
         self.over = false;
+    }
+
+    /// What a link carries of the run: the instant shown and the events.
+    pub fn moment(&self) -> crate::link::Moment<S::Event> {
+        crate::link::Moment {
+            instant: self.time(),
+            events: self.events(),
+        }
     }
 
     /// Replay a link's events (each at its time) and land on `instant`.

@@ -6,7 +6,7 @@ use kinolab_common::display::fixed;
 use kinolab_wheels::{Icr, Wheel, WheelKind};
 
 use crate::draw::labels::Labels;
-use crate::draw::{PlaneView, local, placed};
+use crate::draw::{PlaneView, local, marks, placed};
 
 /// A plane view with the robot placed in it: robot-frame points go through
 /// the pose to the world, then to the screen.
@@ -152,8 +152,7 @@ pub(crate) fn draw_icr(
             let at = view.robot([x, y]);
             if clip.shrink(6.0).contains(at) {
                 painter.circle_stroke(at, 7.0, stroke);
-                painter.line_segment([at - vec2(10.0, 0.0), at + vec2(10.0, 0.0)], stroke);
-                painter.line_segment([at - vec2(0.0, 10.0), at + vec2(0.0, 10.0)], stroke);
+                marks::plus(painter, at, 10.0, stroke);
                 labels.reserve(egui::Rect::from_center_size(at, vec2(20.0, 20.0)));
                 labels.add(at, "ICR", color).beyond(6.0);
             } else {

@@ -13,7 +13,7 @@ use super::chassis::{
     RobotView, contact_point, draw_frame, draw_icr, draw_wheel, wheel_color, wheel_rects,
 };
 use crate::draw::labels::Labels;
-use crate::draw::{PlaneView, grid, placed, placed_dir};
+use crate::draw::{PlaneView, canvas, grid, placed, placed_dir};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -387,7 +387,7 @@ impl Drive {
             theme::accent(ui),
             rect,
         );
-        labels.draw(painter, &egui::FontId::proportional(12.0));
+        labels.draw(painter, &egui::FontId::proportional(theme::LABEL_SIZE));
     }
 
     /// The twist, ICR and pose in words, and what each wheel does.
@@ -439,20 +439,18 @@ impl LabWidget for Drive {
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         let width = ui.available_width().min(900.0);
-        let (response, painter) = ui.allocate_painter(vec2(width, 360.0), Sense::click());
+        let (response, painter) = canvas(ui, vec2(width, 360.0), Sense::click());
         let rect = response.rect;
         if response.clicked() {
             response.request_focus();
         }
-        let painter = painter.with_clip_rect(rect);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         self.keyboard(ui, &response);
         let (twist, note) = self.current_twist();
         self.step(ui, twist);
         self.floor(ui, &painter, rect, twist);
         self.readouts(ui, twist);
         // One line kept for notes, so the layout does not jump.
-        ui.label(RichText::new(note.unwrap_or_default()).color(theme::warn_color(ui)));
+        ui.label(RichText::new(note.unwrap_or_default()).color(theme::error_color(ui)));
         ui.label(
             RichText::new(
                 "Click the floor (or hover it) and use the arrow keys to drive; Q and E slide sideways.",

@@ -6,8 +6,8 @@ use kinolab_common::display::{fixed, signed};
 use kinolab_wheels::{Vector3, rotation};
 use serde::{Deserialize, Serialize};
 
-use crate::draw::axes;
 use crate::draw::labels::Labels;
+use crate::draw::{axes, canvas};
 use crate::widget::{LabWidget, Params};
 use crate::{link, theme};
 
@@ -112,12 +112,12 @@ impl FrameRotation {
             painter.arrow(p, v, Stroke::new(3.0, theme::good_color(ui)));
             labels.avoid_line(p, p + v);
         }
-        labels.draw(painter, &egui::FontId::proportional(12.0));
+        labels.draw(painter, &egui::FontId::proportional(theme::LABEL_SIZE));
         painter.text(
             rect.right_top() + vec2(-10.0, 10.0),
             egui::Align2::RIGHT_TOP,
             format!("θ = {}°", fixed(self.setup.theta_deg, 0)),
-            egui::FontId::proportional(13.0),
+            egui::FontId::proportional(theme::TITLE_SIZE),
             ink,
         );
     }
@@ -165,8 +165,7 @@ impl LabWidget for FrameRotation {
         let r = rotation(self.setup.theta_deg.to_radians());
         let robot = r * Vector3::from(self.setup.inertial);
         let size = vec2(ui.available_width().min(720.0), 260.0);
-        let (response, painter) = ui.allocate_painter(size, Sense::hover());
-        painter.rect_filled(response.rect, 6.0, ui.visuals().extreme_bg_color);
+        let (response, painter) = canvas(ui, size, Sense::hover());
         self.drawing(ui, &painter, response.rect);
         self.equation(ui, &r, &robot);
         ui.label(RichText::new(format!(

@@ -6,7 +6,7 @@ use kinolab_architectures::arena::Entrant;
 use kinolab_architectures::exercise::{MISSIONS, pick_architecture, survive_the_person};
 use kinolab_common::display::fixed;
 
-use super::canvas::{COLOURS, NAMES};
+use super::canvas::NAMES;
 use super::{ArchitectureArena, Task};
 use crate::widget::feedback_ui;
 
@@ -52,7 +52,11 @@ impl ArchitectureArena {
                 .show(ui, |ui| {
                     ui.label("");
                     for (i, name) in NAMES.iter().enumerate() {
-                        ui.label(RichText::new(*name).strong().color(COLOURS[i]));
+                        ui.label(
+                            RichText::new(*name)
+                                .strong()
+                                .color(crate::theme::ARCHITECTURE_COLORS[i]),
+                        );
                     }
                     ui.end_row();
                     for (row, label) in ROWS.iter().enumerate() {

@@ -9,13 +9,7 @@ use kinolab_common::display::fixed;
 use super::{ArchitectureArena, WORLDS};
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
 use crate::draw::PlaneView;
-
-/// One colour per architecture: hierarchical, reactive, hybrid.
-pub(super) const COLOURS: [Color32; 3] = [
-    Color32::from_rgb(70, 140, 230),
-    Color32::from_rgb(230, 120, 40),
-    Color32::from_rgb(60, 170, 90),
-];
+use crate::theme;
 
 pub(super) const NAMES: [&str; 3] = ["Hierarchical", "Reactive", "Hybrid"];
 
@@ -98,7 +92,7 @@ impl ArchitectureArena {
         ui.horizontal_wrapped(|ui| {
             ui.label("Beliefs of:");
             for (i, name) in NAMES.iter().enumerate() {
-                let text = RichText::new(*name).color(COLOURS[i]);
+                let text = RichText::new(*name).color(theme::ARCHITECTURE_COLORS[i]);
                 if ui.selectable_label(self.focus == i, text).clicked() {
                     self.focus = i;
                 }
@@ -125,7 +119,12 @@ impl ArchitectureArena {
         let t = self.frames.get(shown - 1).map_or(0.0, |f| f.t);
         draw_world(ui, &painter, &view, world, t);
         if let Some(e) = arena.entrants.get(self.focus) {
-            draw_belief(&painter, &view, &e.controller.belief(), COLOURS[self.focus]);
+            draw_belief(
+                &painter,
+                &view,
+                &e.controller.belief(),
+                theme::ARCHITECTURE_COLORS[self.focus],
+            );
         }
         let ink = ui.visuals().text_color();
         for (i, e) in arena.entrants.iter().enumerate() {
@@ -133,9 +132,21 @@ impl ArchitectureArena {
                 .iter()
                 .filter_map(|f| f.poses.get(i))
                 .map(|p| [p.x, p.y]);
-            draw_trail(&painter, &view, trail, COLOURS[i].gamma_multiply(0.8));
+            draw_trail(
+                &painter,
+                &view,
+                trail,
+                theme::ARCHITECTURE_COLORS[i].gamma_multiply(0.8),
+            );
             if let Some(pose) = self.frames.get(shown - 1).and_then(|f| f.poses.get(i)) {
-                draw_robot(&painter, &view, pose, e.sim.body.radius(), COLOURS[i], ink);
+                draw_robot(
+                    &painter,
+                    &view,
+                    pose,
+                    e.sim.body.radius(),
+                    theme::ARCHITECTURE_COLORS[i],
+                    ink,
+                );
             }
         }
     }
@@ -156,7 +167,7 @@ impl ArchitectureArena {
         painter.rect_filled(
             Rect::from_min_max(rect.min, pos2(x(end), rect.bottom())),
             3.0,
-            crate::theme::accent(ui).gamma_multiply(0.3),
+            theme::accent(ui).gamma_multiply(0.3),
         );
         painter.line_segment(
             [pos2(x(at), rect.top()), pos2(x(at), rect.bottom())],
@@ -172,9 +183,9 @@ impl ArchitectureArena {
 
 /// One robot's beliefs: the cells its map holds occupied (felt ones
 /// darker), the search in progress, and the plan still ahead.
-fn draw_belief(painter: &egui::Painter, view: &PlaneView, belief: &Belief<'_>, colour: Color32) {
+fn draw_belief(painter: &egui::Painter, view: &PlaneView, belief: &Belief<'_>, color: Color32) {
     if let Some(map) = belief.map {
-        draw_map(painter, view, map, colour);
+        draw_map(painter, view, map, color);
     }
     if let Some(p) = belief.planning {
         let half = p.grid.cell / 2.0;
@@ -184,20 +195,20 @@ fn draw_belief(painter: &egui::Painter, view: &PlaneView, belief: &Belief<'_>, c
                 view.to_screen([q.x - half, q.y + half]),
                 view.to_screen([q.x + half, q.y - half]),
             );
-            painter.rect_filled(r, 0.0, colour.gamma_multiply(0.12));
+            painter.rect_filled(r, 0.0, color.gamma_multiply(0.12));
         }
     }
     if !belief.plan.is_empty() {
         let pts: Vec<_> = belief.plan.iter().map(|p| view.to_screen(*p)).collect();
-        let dash = egui::Shape::dashed_line(&pts, Stroke::new(2.5, colour), 8.0, 5.0);
+        let dash = egui::Shape::dashed_line(&pts, Stroke::new(2.5, color), 8.0, 5.0);
         painter.extend(dash);
         for p in &pts {
-            painter.circle_stroke(*p, 4.0, Stroke::new(1.5, colour));
+            painter.circle_stroke(*p, 4.0, Stroke::new(1.5, color));
         }
     }
 }
 
-fn draw_map(painter: &egui::Painter, view: &PlaneView, map: &Cartographer, colour: Color32) {
+fn draw_map(painter: &egui::Painter, view: &PlaneView, map: &Cartographer, color: Color32) {
     let half = map.cell / 2.0;
     // The fence is drawn already; its row of cells would only fringe it.
     let inner = |(i, j): (usize, usize)| i > 0 && j > 0 && i + 1 < map.nx && j + 1 < map.ny;
@@ -208,10 +219,6 @@ fn draw_map(painter: &egui::Painter, view: &PlaneView, map: &Cartographer, colou
             view.to_screen([q.x - half, q.y + half]),
             view.to_screen([q.x + half, q.y - half]),
         );
-        painter.rect_filled(
-            r,
-            0.0,
-            colour.gamma_multiply(if felt { 0.75 } else { 0.35 }),
-        );
+        painter.rect_filled(r, 0.0, color.gamma_multiply(if felt { 0.75 } else { 0.35 }));
     }
 }

@@ -5,7 +5,7 @@ use egui::{Sense, Stroke, vec2};
 use kinolab_world::Vec2;
 
 use super::Arena;
-use crate::behaviour::world_view::{colour, draw_robot, draw_trail, draw_world};
+use crate::behaviour::world_view::{color, draw_robot, draw_trail, draw_world};
 use crate::draw::marks::arrow;
 use crate::draw::{PlaneView, handle};
 
@@ -43,7 +43,7 @@ impl Arena {
                     painter.line_segment([at, view.to_screen(end)], Stroke::new(1.0, c));
                 }
             }
-            let body = r_colour(shown.last().and_then(|r| r.in_control));
+            let body = in_control_color(shown.last().and_then(|r| r.in_control));
             draw_robot(&painter, &view, &pose, radius, body, ink);
             if let Some(r) = shown.last() {
                 let at = view.to_screen([pose.x, pose.y]);
@@ -58,7 +58,7 @@ impl Arena {
                             at,
                             world_dir(*v) * ARROW_SCALE,
                             8.0,
-                            Stroke::new(2.0, colour(i)),
+                            Stroke::new(2.0, color(i)),
                         );
                     }
                 }
@@ -93,9 +93,8 @@ impl Arena {
                 9.0,
                 &format!("Obstacle {}", i + 1),
             );
-            if h.dragged() {
-                let d = view.delta_to_world(h.moved);
-                edit = Some((Some(i), [a.x + d[0], a.y + d[1]]));
+            if let Some(to) = h.dragged_to(view, [a.x, a.y]) {
+                edit = Some((Some(i), to));
             }
         }
         if let Some(g) = setup.world.goal {
@@ -106,9 +105,8 @@ impl Arena {
                 10.0,
                 "Goal",
             );
-            if h.dragged() {
-                let d = view.delta_to_world(h.moved);
-                edit = Some((None, [g.x + d[0], g.y + d[1]]));
+            if let Some(to) = h.dragged_to(view, [g.x, g.y]) {
+                edit = Some((None, to));
             }
         }
         let Some((which, at)) = edit else { return };
@@ -132,7 +130,7 @@ impl Arena {
 
     fn legend(&self, ui: &egui::Ui, rect: egui::Rect) {
         let painter = ui.painter_at(rect);
-        let font = egui::FontId::proportional(13.0);
+        let font = egui::FontId::proportional(crate::theme::TITLE_SIZE);
         let names = self.names();
         let backdrop = egui::Rect::from_min_size(
             rect.left_top() + vec2(4.0, 4.0),
@@ -146,7 +144,7 @@ impl Arena {
         let mut y = rect.top() + 16.0;
         for (i, name) in names.iter().enumerate() {
             let at = egui::pos2(rect.left() + 10.0, y);
-            painter.line_segment([at, at + vec2(18.0, 0.0)], Stroke::new(3.0, colour(i)));
+            painter.line_segment([at, at + vec2(18.0, 0.0)], Stroke::new(3.0, color(i)));
             painter.text(
                 at + vec2(24.0, 0.0),
                 egui::Align2::LEFT_CENTER,
@@ -172,6 +170,6 @@ impl Arena {
 }
 
 /// The robot takes the colour of the behaviour in control.
-fn r_colour(in_control: Option<usize>) -> egui::Color32 {
-    in_control.map_or(egui::Color32::GRAY, colour)
+pub(super) fn in_control_color(in_control: Option<usize>) -> egui::Color32 {
+    in_control.map_or(crate::theme::NEUTRAL, color)
 }

@@ -9,7 +9,7 @@ use kinolab_behaviours::coordinate::{Coordinator, Trace};
 use kinolab_common::display::fixed;
 
 use super::{Arena, Record, sets};
-use crate::behaviour::world_view::colour;
+use crate::behaviour::world_view::color;
 use crate::theme;
 
 impl Arena {
@@ -45,7 +45,7 @@ impl Arena {
                         .and_then(|r| r.vectors[i])
                         .map_or("off".to_owned(), |v| format!("{} m/s", fixed(v.norm(), 2)));
                     ui.label(
-                        RichText::new(format!("■ {name}: gain {gain}, {size}")).color(colour(i)),
+                        RichText::new(format!("■ {name}: gain {gain}, {size}")).color(color(i)),
                     );
                 }
             }
@@ -69,7 +69,7 @@ fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Opt
     let painter = ui.painter_at(rect);
     let ink = ui.visuals().text_color();
     let accent = theme::accent(ui);
-    let font = FontId::proportional(13.0);
+    let font = FontId::proportional(theme::TITLE_SIZE);
     let y = |level: usize| rect.top() + 18.0 + 36.0 * (rows - 1 - level) as f32;
     let box_right = rect.left() + 90.0;
     let motor_x = rect.right() - 40.0;
@@ -83,8 +83,8 @@ fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Opt
         painter.rect(
             b,
             4.0,
-            colour(i).gamma_multiply(if lit { 0.5 } else { 0.15 }),
-            Stroke::new(1.0, colour(i)),
+            color(i).gamma_multiply(if lit { 0.5 } else { 0.15 }),
+            Stroke::new(1.0, color(i)),
             egui::StrokeKind::Middle,
         );
         painter.text(
@@ -169,7 +169,7 @@ fn votes(ui: &mut egui::Ui, record: Option<&Record>) {
         };
         painter.rect_filled(bar, 1.0, c);
     }
-    let font = FontId::proportional(12.0);
+    let font = FontId::proportional(theme::LABEL_SIZE);
     painter.text(
         rect.left_bottom(),
         Align2::LEFT_BOTTOM,

@@ -5,7 +5,7 @@ use egui::{Pos2, RichText, Sense, Stroke, pos2, vec2};
 use kinolab_common::display::fixed;
 
 use super::Arena;
-use crate::behaviour::world_view::colour;
+use super::canvas::in_control_color;
 
 impl Arena {
     pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
@@ -51,7 +51,7 @@ impl Arena {
             if bumps > 0 {
                 ui.label(
                     RichText::new(format!("{bumps} bump{}", if bumps == 1 { "" } else { "s" }))
-                        .color(crate::theme::warn_color(ui)),
+                        .color(crate::theme::error_color(ui)),
                 );
             }
         });
@@ -69,7 +69,7 @@ impl Arena {
         painter.rect_filled(rect, 3.0, ui.visuals().extreme_bg_color);
         let x = |k: usize| rect.left() + width * k as f32 / steps as f32;
         for (k, r) in self.records.iter().enumerate() {
-            let c = r.in_control.map_or(egui::Color32::GRAY, colour);
+            let c = in_control_color(r.in_control);
             let cell = egui::Rect::from_min_max(
                 pos2(x(k), rect.top()),
                 pos2(x(k + 1) + 0.5, rect.bottom()),
@@ -82,7 +82,7 @@ impl Arena {
             if r.bump {
                 painter.line_segment(
                     [pos2(x(k), rect.top()), pos2(x(k), rect.bottom())],
-                    Stroke::new(2.0, crate::theme::warn_color(ui)),
+                    Stroke::new(2.0, crate::theme::error_color(ui)),
                 );
             }
         }

@@ -10,26 +10,14 @@ use kinolab_components::{Action, Record};
 
 use super::ComponentLab;
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
-use crate::draw::PlaneView;
+use crate::draw::{PlaneView, canvas, marks};
+use crate::theme;
 
 const LINE: f32 = 15.0;
 const HEADER: f32 = 30.0;
 const GAP: f32 = 14.0;
 /// A press this close (points) to an anchor grabs it.
 const GRAB: f32 = 10.0;
-
-/// A colour per pattern, readable in both themes.
-pub fn pattern_colour(pattern: &str) -> Color32 {
-    match pattern {
-        "send" => Color32::from_rgb(230, 120, 40),
-        "query" => Color32::from_rgb(70, 140, 230),
-        "push-newest" => Color32::from_rgb(60, 170, 90),
-        "push-timed" => Color32::from_rgb(40, 160, 160),
-        "event" => Color32::from_rgb(200, 70, 170),
-        "wiring" => Color32::from_rgb(150, 150, 40),
-        _ => Color32::GRAY,
-    }
-}
 
 /// Where each box goes: column = longest chain of servers behind it.
 pub fn columns(views: &[ComponentView]) -> Vec<usize> {
@@ -167,21 +155,22 @@ pub fn show(ui: &mut egui::Ui, lab: &mut ComponentLab) -> Option<Action> {
     );
     let mut action = None;
     ui.horizontal_top(|ui| {
-        let (rect, response) = ui.allocate_exact_size(
+        let (response, painter) = canvas(
+            ui,
             vec2(diagram_width, height.max(120.0)),
             Sense::click_and_drag(),
         );
+        let rect = response.rect;
         let rects: Vec<Rect> = rects
             .iter()
             .map(|r| r.translate(rect.min.to_vec2()))
             .collect();
         let anchors = Anchors::new(&views, &rects);
-        let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         draw_wires(&painter, lab, &views, &anchors);
         draw_boxes(ui, &painter, lab, &views, &rects);
         if let Some(rt) = lab.rt.as_ref() {
-            draw_tokens(&painter, rt.trace(), rt.now(), &anchors);
+            let lost = theme::error_color(ui);
+            draw_tokens(&painter, rt.trace(), rt.now(), &anchors, lost);
         }
         action = interact(ui, &painter, lab, &response, &anchors);
         if side {
@@ -204,10 +193,10 @@ fn legend(ui: &mut egui::Ui) {
         for p in kinolab_components::exercise::CHOICES {
             let (rect, _) = ui.allocate_exact_size(vec2(10.0, 10.0), Sense::hover());
             ui.painter()
-                .circle_filled(rect.center(), 4.5, pattern_colour(p));
-            ui.label(egui::RichText::new(p).size(11.5));
+                .circle_filled(rect.center(), 4.5, theme::pattern_color(p));
+            ui.label(egui::RichText::new(p).size(theme::SMALL_SIZE));
         }
-        ui.label(egui::RichText::new("■ service  ● port").size(11.5));
+        ui.label(egui::RichText::new("■ service  ● port").size(theme::SMALL_SIZE));
     });
 }
 
@@ -220,11 +209,11 @@ fn draw_boxes(
 ) {
     let ink = ui.visuals().text_color();
     let faint = ui.visuals().weak_text_color();
-    let small = FontId::proportional(11.0);
+    let small = FontId::proportional(theme::SMALL_SIZE);
     for (c, r) in views.iter().zip(rects) {
         let fill = ui.visuals().window_fill;
         let edge = if c.waiting_on.is_some() {
-            crate::theme::warn_color(ui)
+            theme::error_color(ui)
         } else {
             faint
         };
@@ -239,7 +228,7 @@ fn draw_boxes(
             r.left_top() + vec2(6.0, 3.0),
             Align2::LEFT_TOP,
             &c.name,
-            FontId::proportional(12.5),
+            FontId::proportional(theme::LABEL_SIZE),
             ink,
         );
         let mut state = match &c.waiting_on {
@@ -253,13 +242,13 @@ fn draw_boxes(
             r.left_top() + vec2(6.0, 17.0),
             Align2::LEFT_TOP,
             state,
-            FontId::proportional(10.0),
+            FontId::proportional(theme::SMALL_SIZE),
             faint,
         );
         for (i, s) in c.services.iter().enumerate() {
             let a = service_anchor(*r, i);
-            let colour = pattern_colour(s.pattern.name());
-            painter.rect_filled(Rect::from_center_size(a, vec2(9.0, 9.0)), 1.5, colour);
+            let color = theme::pattern_color(s.pattern.name());
+            painter.rect_filled(Rect::from_center_size(a, vec2(9.0, 9.0)), 1.5, color);
             painter.text(
                 a - vec2(8.0, 0.0),
                 Align2::RIGHT_CENTER,
@@ -271,12 +260,12 @@ fn draw_boxes(
         for (j, p) in c.ports.iter().enumerate() {
             let a = port_anchor(*r, c.services.len(), j);
             let name = format!("{}.{}", c.name, p.name);
-            let colour = pattern_colour(p.pattern.name());
+            let color = theme::pattern_color(p.pattern.name());
             let selected = lab.selected.as_deref() == Some(name.as_str());
             painter.circle(
                 a,
                 if selected { 6.0 } else { 4.5 },
-                colour,
+                color,
                 Stroke::new(if selected { 2.0 } else { 0.0 }, ink),
             );
             let label = if p.blocking {
@@ -317,11 +306,11 @@ fn draw_wires(
                 continue;
             };
             let busy = trace[start..].iter().any(|r| r.port == port);
-            let colour = pattern_colour(p.pattern.name());
+            let color = theme::pattern_color(p.pattern.name());
             let stroke = if busy {
-                Stroke::new(3.0, colour)
+                Stroke::new(3.0, color)
             } else {
-                Stroke::new(1.5, colour.gamma_multiply(0.55))
+                Stroke::new(1.5, color.gamma_multiply(0.55))
             };
             let points: Vec<Pos2> = (0..=24).map(|k| along(a, b, k as f32 / 24.0)).collect();
             painter.add(egui::Shape::line(points, stroke));
@@ -331,7 +320,13 @@ fn draw_wires(
 
 /// Messages on their way, as dots moving along their wires; lost ones as
 /// a red cross where they vanished.
-fn draw_tokens(painter: &egui::Painter, trace: &[Record], now: f64, anchors: &Anchors) {
+fn draw_tokens(
+    painter: &egui::Painter,
+    trace: &[Record],
+    now: f64,
+    anchors: &Anchors,
+    lost: Color32,
+) {
     let start = trace.partition_point(|r| r.sent < now - 2.0);
     for r in &trace[start..] {
         if r.sent > now || matches!(r.pattern, "wiring" | "state" | "note") {
@@ -344,24 +339,16 @@ fn draw_tokens(painter: &egui::Painter, trace: &[Record], now: f64, anchors: &An
             r.kind,
             "command" | "request" | "subscribe" | "unsubscribe" | "activate" | "deactivate"
         );
-        let colour = pattern_colour(r.pattern);
+        let color = theme::pattern_color(r.pattern);
         match r.delivered {
             Some(d) if d > now && d > r.sent => {
                 let f = ((now - r.sent) / (d - r.sent)) as f32;
                 let t = if upstream { 1.0 - f } else { f };
-                painter.circle_filled(along(a, b, t), 4.5, colour);
+                painter.circle_filled(along(a, b, t), 4.5, color);
             }
             None if r.status == kinolab_components::Status::Lost && now - r.sent < 0.3 => {
                 let at = along(a, b, 0.5);
-                let red = Color32::from_rgb(220, 50, 50);
-                painter.line_segment(
-                    [at - vec2(5.0, 5.0), at + vec2(5.0, 5.0)],
-                    Stroke::new(2.0, red),
-                );
-                painter.line_segment(
-                    [at - vec2(5.0, -5.0), at + vec2(5.0, -5.0)],
-                    Stroke::new(2.0, red),
-                );
+                marks::cross(painter, at, 5.0, Stroke::new(2.0, lost));
             }
             _ => {}
         }
@@ -414,13 +401,13 @@ fn draw_robot_world(ui: &mut egui::Ui, lab: &ComponentLab, size: egui::Vec2) {
     let view = PlaneView::fit(rect.shrink(6.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
     let painter = ui.painter_at(rect);
     draw_world(ui, &painter, &view, &sim.world, sim.time);
-    let colour = pattern_colour("query");
+    let color = theme::pattern_color("query");
     draw_trail(
         &painter,
         &view,
         lab.track.iter().map(|(_, p)| [p.x, p.y]),
-        colour,
+        color,
     );
     let ink = ui.visuals().text_color();
-    draw_robot(&painter, &view, &sim.pose, sim.body.radius(), colour, ink);
+    draw_robot(&painter, &view, &sim.pose, sim.body.radius(), color, ink);
 }

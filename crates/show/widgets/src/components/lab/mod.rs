@@ -335,7 +335,7 @@ impl ComponentLab {
         if why.reason != "received" {
             ui.label(
                 egui::RichText::new(format!("Why nothing? {}", why.message))
-                    .color(crate::theme::warn_color(ui)),
+                    .color(crate::theme::error_color(ui)),
             );
         }
         ui.horizontal_wrapped(|ui| {
@@ -364,12 +364,19 @@ impl ComponentLab {
         // A line each, wrapping: a status can be long and the column narrow.
         for c in rt.view() {
             ui.horizontal_wrapped(|ui| {
-                ui.label(egui::RichText::new(&c.name).strong().size(12.5));
+                ui.label(
+                    egui::RichText::new(&c.name)
+                        .strong()
+                        .size(crate::theme::LABEL_SIZE),
+                );
                 let state = match &c.waiting_on {
                     Some(p) => format!("blocked on {p}"),
                     None => c.state.name().to_owned(),
                 };
-                ui.label(egui::RichText::new(format!("{state}: {}", c.status)).size(12.5));
+                ui.label(
+                    egui::RichText::new(format!("{state}: {}", c.status))
+                        .size(crate::theme::LABEL_SIZE),
+                );
             });
         }
     }
@@ -404,7 +411,7 @@ impl LabWidget for ComponentLab {
             self.act(action);
         }
         if let Some(r) = &self.refusal {
-            ui.label(egui::RichText::new(r).color(crate::theme::warn_color(ui)));
+            ui.label(egui::RichText::new(r).color(crate::theme::error_color(ui)));
         }
         self.port_panel(ui);
         self.statuses(ui);
@@ -413,7 +420,7 @@ impl LabWidget for ComponentLab {
             self.task_ui(ui);
         }
         if self.playing {
-            let dt = f64::from(ui.input(|i| i.stable_dt).min(0.1));
+            let dt = crate::widget::frame_dt(ui);
             let t = self.now() + dt * SPEEDS[self.speed];
             self.advance_to(t);
             if self.now() >= self.until {

@@ -7,8 +7,7 @@ use egui::{Align2, Color32, FontId, Pos2, Sense, Stroke, pos2, vec2};
 use kinolab_components::Status;
 
 use super::ComponentLab;
-use super::diagram::pattern_colour;
-use crate::draw::marks;
+use crate::draw::{canvas, marks};
 use crate::theme;
 
 /// Most arrows labelled; beyond this only the arrows are drawn.
@@ -18,9 +17,8 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
     let Some(rt) = lab.rt.as_ref() else { return };
     let names: Vec<String> = rt.view().into_iter().map(|c| c.name).collect();
     let width = ui.available_width();
-    let (rect, _) = ui.allocate_exact_size(vec2(width, 280.0), Sense::hover());
-    let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
+    let (response, painter) = canvas(ui, vec2(width, 280.0), Sense::hover());
+    let rect = response.rect;
     let ink = ui.visuals().text_color();
     let faint = ui.visuals().weak_text_color();
     let left = rect.left() + 50.0;
@@ -42,7 +40,7 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
             pos2(x, rect.top() + 4.0),
             Align2::CENTER_TOP,
             name,
-            FontId::proportional(11.0),
+            FontId::proportional(theme::SMALL_SIZE),
             ink,
         );
     }
@@ -50,14 +48,14 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
         pos2(rect.left() + 4.0, top),
         Align2::LEFT_TOP,
         format!("{:.2} s", from.max(0.0)),
-        FontId::proportional(9.5),
+        FontId::proportional(theme::TINY_SIZE),
         faint,
     );
     painter.text(
         pos2(rect.left() + 4.0, bottom),
         Align2::LEFT_BOTTOM,
         format!("{now:.2} s"),
-        FontId::proportional(9.5),
+        FontId::proportional(theme::TINY_SIZE),
         faint,
     );
     let trace = rt.trace();
@@ -70,14 +68,14 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
     // Labels at least a line apart, so they never pile up.
     let mut last_label = f32::NEG_INFINITY;
     let mut room = |y: f32| {
-        let free = label && y - last_label >= 11.0;
+        let free = label && y - last_label >= theme::SMALL_SIZE + 2.0;
         if free {
             last_label = y;
         }
         free
     };
     for r in shown {
-        let colour = pattern_colour(r.pattern);
+        let color = theme::pattern_color(r.pattern);
         let (a, y0) = (x_of(&r.from), y_of(r.sent));
         match r.pattern {
             "note" | "state" => {
@@ -89,7 +87,7 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
                             at + vec2(5.0, 0.0),
                             Align2::LEFT_CENTER,
                             &r.summary,
-                            FontId::proportional(10.0),
+                            FontId::proportional(theme::SMALL_SIZE),
                             faint,
                         );
                     }
@@ -109,13 +107,13 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
                 &painter,
                 pos2(a, y0),
                 pos2(b, y_of(d)),
-                colour,
+                color,
                 r.status == Status::Skipped,
             ),
             None => {
                 let mid = pos2((a + b) / 2.0, y0 + 6.0);
-                painter.line_segment([pos2(a, y0), mid], Stroke::new(1.5, colour));
-                marks::cross(&painter, mid, 4.0, Stroke::new(2.0, theme::warn_color(ui)));
+                painter.line_segment([pos2(a, y0), mid], Stroke::new(1.5, color));
+                marks::cross(&painter, mid, 4.0, Stroke::new(2.0, theme::error_color(ui)));
             }
         }
         if room(y0) {
@@ -129,19 +127,19 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
                 pos2((a + b) / 2.0, y0 - 1.0),
                 Align2::CENTER_BOTTOM,
                 text,
-                FontId::proportional(9.5),
-                colour,
+                FontId::proportional(theme::SMALL_SIZE),
+                color,
             );
         }
     }
 }
 
 /// A message's arrow from `a` to `b`, faded when it went nowhere.
-fn arrow(painter: &egui::Painter, a: Pos2, b: Pos2, colour: Color32, faded: bool) {
-    let colour = if faded {
-        colour.gamma_multiply(0.4)
+fn arrow(painter: &egui::Painter, a: Pos2, b: Pos2, color: Color32, faded: bool) {
+    let color = if faded {
+        color.gamma_multiply(0.4)
     } else {
-        colour
+        color
     };
-    marks::arrow(painter, a, b - a, 7.0, Stroke::new(1.5, colour));
+    marks::arrow(painter, a, b - a, 7.0, Stroke::new(1.5, color));
 }

@@ -9,7 +9,7 @@ use kinolab_control::Pose;
 use super::Playground;
 use crate::control::field;
 use crate::draw::labels::Labels;
-use crate::draw::{PlaneView, handle};
+use crate::draw::{PlaneView, canvas, handle};
 use crate::theme;
 
 /// Which poses a floor lets the learner drag.
@@ -39,10 +39,8 @@ impl Playground {
         keep: &[Pose],
     ) -> (Painter, PlaneView) {
         let salt = ui.next_auto_id();
-        let (response, painter) = ui.allocate_painter(size, Sense::hover());
+        let (response, painter) = canvas(ui, size, Sense::hover());
         let rect = response.rect;
-        let painter = painter.with_clip_rect(rect);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let view = self.frozen.unwrap_or_else(|| {
             let (min, max) = field::bounds(keep, 0.7);
             PlaneView::fit(rect, min, max)
@@ -127,7 +125,7 @@ impl Playground {
             let p = &self.set.start;
             field::pose(painter, &mut labels, view, p, ink, "start", true);
         }
-        labels.draw(painter, &egui::FontId::proportional(13.0));
+        labels.draw(painter, &egui::FontId::proportional(theme::TITLE_SIZE));
     }
 }
 

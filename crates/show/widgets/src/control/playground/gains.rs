@@ -64,11 +64,11 @@ impl Playground {
                 } else if s.locally_stable {
                     theme::accent(ui)
                 } else {
-                    theme::warn_color(ui)
+                    theme::error_color(ui)
                 };
                 (s.explanation, color)
             }
-            Err(e) => (e, theme::warn_color(ui)),
+            Err(e) => (e, theme::error_color(ui)),
         };
         // Two lines kept whatever the verdict, so the plot below never moves.
         crate::widget::status_text(ui, RichText::new(text).color(color), 2);
@@ -203,7 +203,7 @@ fn conditions(ui: &mut egui::Ui, g: &Gains) {
                 let (mark, color) = if c.holds {
                     ("holds", theme::good_color(ui))
                 } else {
-                    ("fails", theme::warn_color(ui))
+                    ("fails", theme::error_color(ui))
                 };
                 ui.label(RichText::new(mark).color(color));
                 crate::draw::labels::formula(ui, &tex(c.expression));

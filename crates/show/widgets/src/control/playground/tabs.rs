@@ -24,7 +24,7 @@ impl Playground {
             Ok(t) => t,
             Err(e) => {
                 self.draw_ends(ui, &painter, &view, true, None);
-                ui.label(RichText::new(e).color(theme::warn_color(ui)));
+                ui.label(RichText::new(e).color(theme::error_color(ui)));
                 return;
             }
         };
@@ -51,7 +51,7 @@ impl Playground {
         self.playback(ui, t.samples.last().map_or(0.0, |s| s.t));
         let text = RichText::new(summary(&t));
         ui.label(if t.diverged.is_some() {
-            text.color(theme::warn_color(ui))
+            text.color(theme::error_color(ui))
         } else {
             text
         });
@@ -62,7 +62,7 @@ impl Playground {
     /// Play, pause and scrub through a run.
     pub(super) fn playback(&mut self, ui: &mut egui::Ui, end: f64) {
         if self.playing {
-            self.cursor += f64::from(ui.input(|i| i.stable_dt)).clamp(0.0, 0.1);
+            self.cursor += crate::widget::frame_dt(ui);
             if self.cursor >= end {
                 self.cursor = end;
                 self.playing = false;
@@ -104,17 +104,17 @@ impl Playground {
             .map(|[dx, dy]| Pose::new(self.set.goal.x + dx, self.set.goal.y + dy, 0.0))
             .collect();
         let (painter, view) = self.floor(ui, vec2(width, 380.0), Grabs::Goal, &ring);
-        let (accent, warn) = (theme::accent(ui), theme::warn_color(ui));
+        let (accent, bad) = (theme::accent(ui), theme::error_color(ui));
         let runs = match self.many.clone() {
             Some(Ok(runs)) => runs,
             Some(Err(e)) => {
-                ui.label(RichText::new(e).color(warn));
+                ui.label(RichText::new(e).color(bad));
                 return;
             }
             None => return,
         };
         for t in &runs {
-            let color = if t.backward { warn } else { accent };
+            let color = if t.backward { bad } else { accent };
             field::path(
                 &painter,
                 &view,
@@ -156,7 +156,7 @@ impl Playground {
         let (plan, open, closed) = match self.compare.clone() {
             Some(Ok(c)) => c,
             Some(Err(e)) => {
-                ui.label(RichText::new(e).color(theme::warn_color(ui)));
+                ui.label(RichText::new(e).color(theme::error_color(ui)));
                 return;
             }
             None => return,
@@ -214,7 +214,7 @@ impl Playground {
             "start",
             true,
         );
-        labels.draw(&painter, &egui::FontId::proportional(13.0));
+        labels.draw(&painter, &egui::FontId::proportional(theme::TITLE_SIZE));
         field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
         if let Some(s) = field::at_time(&t.samples, self.cursor) {
             field::robot(&painter, &view, &s.pose, accent);

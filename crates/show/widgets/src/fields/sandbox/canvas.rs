@@ -13,7 +13,7 @@ use super::Sandbox;
 use super::piece::Kind;
 use crate::draw::labels::Labels;
 use crate::draw::marks::{arrow, cross, dashed_circle, star};
-use crate::draw::{PlaneView, handle};
+use crate::draw::{PlaneView, canvas, corner_text, handle};
 use crate::theme;
 
 const SHADE_COLUMNS: usize = 60;
@@ -40,24 +40,15 @@ pub(super) struct Ink {
 
 impl Ink {
     pub fn of(ui: &egui::Ui) -> Self {
-        let dark = ui.visuals().dark_mode;
         let text = ui.visuals().text_color();
         Self {
             text,
             faint: text.gamma_multiply(0.35),
             accent: theme::accent(ui),
             good: theme::good_color(ui),
-            bad: theme::warn_color(ui),
-            obstacle: if dark {
-                Color32::from_gray(150)
-            } else {
-                Color32::from_gray(90)
-            },
-            unicycle: if dark {
-                Color32::from_rgb(230, 170, 60)
-            } else {
-                Color32::from_rgb(190, 110, 0)
-            },
+            bad: theme::error_color(ui),
+            obstacle: theme::solid_color(ui),
+            unicycle: theme::robot_color(ui),
         }
     }
 }
@@ -67,15 +58,14 @@ impl Sandbox {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) -> bool {
         let area = self.area;
         let height = (width * (area.height() / area.width()) as f32).clamp(300.0, 560.0);
-        let (rect, response) = ui.allocate_exact_size(vec2(width, height), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
+        let rect = response.rect;
         let view = PlaneView::fit(
             rect.shrink(6.0),
             [area.x_min, area.y_min],
             [area.x_max, area.y_max],
         );
-        let painter = ui.painter_at(rect);
         let ink = Ink::of(ui);
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         painter.rect_stroke(
             rect,
             6.0,
@@ -101,7 +91,7 @@ impl Sandbox {
             let mut labels = Labels::default();
             labels.reserve(egui::Rect::from_center_size(p, vec2(12.0, 12.0)));
             labels.add(p, "P", ink.text);
-            labels.draw(&painter, &egui::FontId::proportional(15.0));
+            labels.draw(&painter, &egui::FontId::proportional(theme::BODY_SIZE));
         }
         let held = self.handles(ui, &view);
         if let (Some(field), Some(at), false) =
@@ -117,13 +107,7 @@ impl Sandbox {
                 fixed(f.y, 2),
                 fixed(f.norm(), 2)
             );
-            painter.text(
-                rect.left_top() + vec2(8.0, 6.0),
-                egui::Align2::LEFT_TOP,
-                text,
-                egui::FontId::proportional(13.0),
-                ink.text,
-            );
+            corner_text(&painter, rect, 0, text, ink.text);
         }
         held
     }
@@ -323,10 +307,9 @@ impl Sandbox {
                     &format!("{label}, far end"),
                 );
                 held |= h.held();
-                if h.dragged() {
-                    let d = view.delta_to_world(h.moved);
-                    let p = &mut self.design.pieces[i];
-                    p.to = clamp([p.to[0] + d[0], p.to[1] + d[1]]);
+                let p = &mut self.design.pieces[i];
+                if let Some(to) = h.dragged_to(view, p.to) {
+                    p.to = clamp(to);
                     self.changed();
                 }
             }
@@ -339,26 +322,20 @@ impl Sandbox {
             "Robot start",
         );
         held |= h.held();
-        if h.dragged() {
-            let d = view.delta_to_world(h.moved);
-            self.design.start = clamp([self.design.start[0] + d[0], self.design.start[1] + d[1]]);
+        if let Some(to) = h.dragged_to(view, self.design.start) {
+            self.design.start = clamp(to);
         }
         held
     }
 }
 
 fn basin_color(b: Basin, ink: &Ink) -> Color32 {
-    const TRAPS: [Color32; 4] = [
-        Color32::from_rgb(220, 70, 60),
-        Color32::from_rgb(170, 80, 200),
-        Color32::from_rgb(230, 140, 40),
-        Color32::from_rgb(200, 60, 140),
-    ];
+    let traps = theme::TRAP_COLORS;
     match b {
         Basin::Goal => ink.good.gamma_multiply(0.3),
-        Basin::Trap { minimum } => TRAPS[minimum % TRAPS.len()].gamma_multiply(0.35),
-        Basin::Stalled => Color32::from_gray(128).gamma_multiply(0.35),
-        Basin::Wandering => Color32::from_rgb(220, 200, 60).gamma_multiply(0.3),
+        Basin::Trap { minimum } => traps[minimum % traps.len()].gamma_multiply(0.35),
+        Basin::Stalled => theme::NEUTRAL.gamma_multiply(0.35),
+        Basin::Wandering => theme::YELLOW.gamma_multiply(0.3),
     }
 }
 
@@ -377,6 +354,20 @@ fn spin_mark(painter: &Painter, at: Pos2, r: f32, clockwise: bool, stroke: Strok
     arrow(painter, before, (end - before) * 1.5, 7.0, stroke);
 }
 
+/// How many rows of cells as square as `columns` columns give over `area`,
+/// within `[min, max]`.
+fn rows(area: &kinolab_world::Rect, columns: usize, min: f64, max: f64) -> usize {
+    (columns as f64 * area.height() / area.width())
+        .round()
+        .clamp(min, max) as usize
+}
+
+/// A field magnitude `m` as 0 to 1, rising fast and then levelling off (a
+/// quarter of the field's scale gives 63 %).
+fn strength(field: &Field, m: f64) -> f32 {
+    (1.0 - (-m / (field.scale() * 0.25)).exp()) as f32
+}
+
 /// The field's strength as shading: stronger is darker accent.
 fn shade(
     painter: &Painter,
@@ -386,10 +377,7 @@ fn shade(
     color: Color32,
 ) {
     let nx = SHADE_COLUMNS;
-    let ny = ((nx as f64) * area.height() / area.width())
-        .round()
-        .clamp(4.0, 60.0) as usize;
-    let scale = field.scale() * 0.25;
+    let ny = rows(area, nx, 4.0, 60.0);
     let mut mesh = Mesh::default();
     let (dx, dy) = (area.width() / nx as f64, area.height() / ny as f64);
     for j in 0..ny {
@@ -398,8 +386,7 @@ fn shade(
                 area.x_min + (i as f64 + 0.5) * dx,
                 area.y_min + (j as f64 + 0.5) * dy,
             ];
-            let m = field.vector(v(p)).norm();
-            let t = (1.0 - (-m / scale).exp()) as f32;
+            let t = strength(field, field.vector(v(p)).norm());
             let a = view.to_screen([p[0] - dx / 2.0, p[1] + dy / 2.0]);
             let b = view.to_screen([p[0] + dx / 2.0, p[1] - dy / 2.0]);
             mesh.add_colored_rect(Rect::from_two_pos(a, b), color.gamma_multiply(0.35 * t));
@@ -418,17 +405,14 @@ fn arrows(
     color: Color32,
 ) {
     let nx = ARROW_COLUMNS;
-    let ny = ((nx as f64) * area.height() / area.width())
-        .round()
-        .clamp(3.0, 30.0) as usize;
+    let ny = rows(area, nx, 3.0, 30.0);
     let cell = view.length(area.width() / nx as f64);
-    let scale = field.scale() * 0.25;
     for (p, f) in field.arrows(area, nx, ny) {
         let m = f.norm();
         if m < 1e-9 {
             continue;
         }
-        let len = cell * 0.8 * (1.0 - (-m / scale).exp()) as f32;
+        let len = cell * 0.8 * strength(field, m);
         let dir = vec2(f.x as f32, -f.y as f32) / m as f32;
         let at = view.to_screen(w(p)) - dir * len / 2.0;
         arrow(painter, at, dir * len, 4.0, Stroke::new(1.0, color));

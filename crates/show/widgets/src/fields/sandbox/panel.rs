@@ -17,7 +17,7 @@ impl Sandbox {
         ui.set_min_width(240.0);
         self.preset_ui(ui);
         if let Some(problem) = &self.problem {
-            ui.colored_label(crate::theme::warn_color(ui), problem);
+            ui.colored_label(crate::theme::error_color(ui), problem);
         }
         ui.separator();
         self.pieces_ui(ui);

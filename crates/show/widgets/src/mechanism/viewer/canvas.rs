@@ -8,8 +8,8 @@ use kinolab_mechanism::exercise::Task;
 use kinolab_mechanism::{Collisions, Obstacle, Part, Placement, Plane, Pose, Vector3};
 
 use super::{Exercise, Viewer, bounds};
-use crate::draw::handle;
-use crate::draw::scene3d::{ViewKind, draw_capsule, draw_frame, draw_grid};
+use crate::draw::scene3d::{ViewKind, draw_capsule, draw_frame};
+use crate::draw::{canvas_3d, corner_text, handle, marks};
 use crate::theme;
 
 /// Radius of the target ring, points: big enough to grab with a finger.
@@ -18,15 +18,8 @@ const RING: f32 = 13.0;
 impl Viewer {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
         let size = vec2(ui.available_width().min(760.0), 380.0);
-        let (response, painter) = ui.allocate_painter(size, Sense::click_and_drag());
+        let (response, painter) = canvas_3d(ui, size, Sense::click_and_drag(), &self.camera);
         let rect = response.rect;
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
-        draw_grid(
-            &painter,
-            &self.camera,
-            rect,
-            ui.visuals().text_color().gamma_multiply(0.08),
-        );
         let target_held = self.target_handle(ui, rect);
         if !target_held {
             self.camera.handle(ui, &response, true);
@@ -97,13 +90,13 @@ impl Viewer {
             let (c, _) = self.camera.project(rect, &p);
             let touched =
                 collisions.is_some_and(|c| c.pairs.iter().any(|(_, y)| *y == Part::Obstacle(i)));
-            let colour = if touched {
-                theme::warn_color(ui)
+            let color = if touched {
+                theme::error_color(ui)
             } else {
                 ui.visuals().weak_text_color()
             };
             let r = *radius as f32 * self.camera.scale(rect);
-            painter.circle(c, r, colour.gamma_multiply(0.15), Stroke::new(1.5, colour));
+            painter.circle(c, r, color.gamma_multiply(0.15), Stroke::new(1.5, color));
         }
     }
 
@@ -119,7 +112,7 @@ impl Viewer {
         collisions: Option<&Collisions>,
     ) {
         let ink = ui.visuals().text_color();
-        let (accent, warn) = (theme::accent(ui), theme::warn_color(ui));
+        let (accent, bad) = (theme::accent(ui), theme::error_color(ui));
         let hit = |b: usize| {
             collisions.is_some_and(|c| {
                 c.pairs
@@ -132,7 +125,7 @@ impl Viewer {
             let a = at.rotation * s.a + at.translation.vector;
             let b = at.rotation * s.b + at.translation.vector;
             let fill = match (self.shapes, hit(s.body)) {
-                (true, true) => warn.gamma_multiply(0.45),
+                (true, true) => bad.gamma_multiply(0.45),
                 (true, false) => accent.gamma_multiply(0.22),
                 (false, _) => ink.gamma_multiply(0.14),
             };
@@ -143,12 +136,12 @@ impl Viewer {
                 continue; // a body bolted to the world: no link to draw
             }
             let selected = self.selected == Some(joint.child);
-            let colour = if selected {
+            let color = if selected {
                 accent
             } else {
                 ink.gamma_multiply(0.85)
             };
-            let stroke = Stroke::new(if selected { 4.0 } else { 2.5 }, colour);
+            let stroke = Stroke::new(if selected { 4.0 } else { 2.5 }, color);
             let project = |p: &Pose| self.camera.project(rect, &p.translation.vector).0;
             let (pf, pa, pt) = (
                 project(&placed.bodies[joint.parent]),
@@ -162,7 +155,7 @@ impl Viewer {
                     pa,
                     4.0,
                     ui.visuals().extreme_bg_color,
-                    Stroke::new(1.5, colour),
+                    Stroke::new(1.5, color),
                 );
             }
         }
@@ -233,7 +226,7 @@ impl Viewer {
                 let (pa, _) = self.camera.project(rect, &a.translation.vector);
                 let (pb, _) = self.camera.project(rect, &b.translation.vector);
                 painter.circle_stroke(pb, 6.0, Stroke::new(1.5, accent));
-                painter.line_segment([pa, pb], Stroke::new(1.0, theme::warn_color(ui)));
+                painter.line_segment([pa, pb], Stroke::new(1.0, theme::error_color(ui)));
             }
         }
         if let Some(end) = self.end_position() {
@@ -253,9 +246,7 @@ impl Viewer {
         }) = &self.exercise
         {
             let (p, _) = self.camera.project(rect, target);
-            let s = Stroke::new(2.0, theme::good_color(ui));
-            painter.line_segment([p - vec2(7.0, 7.0), p + vec2(7.0, 7.0)], s);
-            painter.line_segment([p - vec2(7.0, -7.0), p + vec2(7.0, -7.0)], s);
+            marks::cross(painter, p, 7.0, Stroke::new(2.0, theme::good_color(ui)));
         }
     }
 
@@ -277,7 +268,7 @@ impl Viewer {
             (_, true) => "drag the ring to move the end; drag elsewhere to pan",
             (_, false) => "drag to pan, Ctrl + wheel to zoom",
         };
-        let font = egui::FontId::proportional(12.0);
+        let font = egui::FontId::proportional(theme::LABEL_SIZE);
         painter.text(
             rect.left_bottom() + vec2(8.0, -8.0),
             egui::Align2::LEFT_BOTTOM,
@@ -293,13 +284,8 @@ impl Viewer {
                 .iter()
                 .map(|(a, b)| format!("{} – {}", self.part_name(a), self.part_name(b)))
                 .collect();
-            painter.text(
-                rect.left_top() + vec2(8.0, 8.0),
-                egui::Align2::LEFT_TOP,
-                format!("Colliding: {}", names.join(", ")),
-                egui::FontId::proportional(13.0),
-                theme::warn_color(ui),
-            );
+            let text = format!("Colliding: {}", names.join(", "));
+            corner_text(painter, rect, 0, text, theme::error_color(ui));
         }
     }
 }

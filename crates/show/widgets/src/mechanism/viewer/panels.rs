@@ -267,7 +267,7 @@ impl Viewer {
         }
         ui.label(RichText::new(lines.join(" · ")).monospace().small());
         for note in [&self.ik_note, &self.closure_note].into_iter().flatten() {
-            ui.label(RichText::new(note).color(theme::warn_color(ui)));
+            ui.label(RichText::new(note).color(theme::error_color(ui)));
         }
     }
 

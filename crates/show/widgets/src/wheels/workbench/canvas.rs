@@ -9,7 +9,7 @@ use kinolab_wheels::{Analysis, Wheel, WheelKind};
 
 use super::{ANGLE_STEP, GRID, Task, Workbench};
 use crate::draw::labels::Labels;
-use crate::draw::{grid, handle};
+use crate::draw::{canvas, grid, handle};
 use crate::theme;
 use crate::wheels::chassis::{
     RobotView, draw_frame, draw_icr, draw_wheel, draw_zero_motion_line, wheel_color, wheel_rects,
@@ -17,17 +17,15 @@ use crate::wheels::chassis::{
 
 impl Workbench {
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui, analysis: &Analysis, size: egui::Vec2) {
-        let (response, painter) = ui.allocate_painter(size, Sense::click());
+        let (response, painter) = canvas(ui, size, Sense::click());
         let rect = response.rect;
-        painter.rect_filled(rect, 6.0, ui.visuals().extreme_bg_color);
         let view = RobotView::robot_frame(rect, self.extent);
-        let painter = painter.with_clip_rect(rect);
         let mut labels = Labels::default();
         let hint = painter.text(
             rect.left_bottom() + vec2(8.0, -6.0),
             egui::Align2::LEFT_BOTTOM,
             "drag a wheel to move it; select it and drag the blue knob to turn it",
-            egui::FontId::proportional(11.0),
+            egui::FontId::proportional(theme::SMALL_SIZE),
             ui.visuals().weak_text_color(),
         );
         labels.reserve(hint);
@@ -37,7 +35,7 @@ impl Workbench {
         self.draw_scene(ui, &painter, &mut labels, &view, analysis);
         let clicked = self.wheel_handles(ui, &painter, &mut labels, &view);
         self.select(clicked, response.clicked());
-        labels.draw(&painter, &egui::FontId::proportional(12.0));
+        labels.draw(&painter, &egui::FontId::proportional(theme::LABEL_SIZE));
     }
 
     /// Everything under the wheels: grid, frame, zero-motion lines, ICR, goal.
@@ -116,7 +114,7 @@ impl Workbench {
                 .add(label_at, (i + 1).to_string(), ink)
                 .toward(vec2(0.0, -1.0));
             if chosen.contains(&i) {
-                painter.circle_stroke(at, 16.0, Stroke::new(2.5, theme::warn_color(ui)));
+                painter.circle_stroke(at, 16.0, Stroke::new(2.5, theme::error_color(ui)));
             }
             let h = handle(
                 ui,

@@ -185,7 +185,7 @@ impl LabWidget for Workbench {
         }
         // One line kept for messages, so the layout does not jump.
         let message = self.message.clone().unwrap_or_default();
-        ui.label(RichText::new(message).color(theme::warn_color(ui)));
+        ui.label(RichText::new(message).color(theme::error_color(ui)));
         self.task_ui(ui);
         self.matrices(ui);
         self.file_ui(ui);

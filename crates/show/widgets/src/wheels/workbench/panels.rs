@@ -305,7 +305,7 @@ impl Workbench {
                     }
                 });
                 if let Some(e) = &self.file_error {
-                    ui.label(RichText::new(e).color(theme::warn_color(ui)));
+                    ui.label(RichText::new(e).color(theme::error_color(ui)));
                 }
             });
     }
