@@ -418,10 +418,20 @@ fn widget_ui(
     let slot = slots
         .entry(id.to_owned())
         .or_insert_with(|| kinolab_widgets::registry::create(spec));
-    if let (Ok(widget), Some(saved)) = (slot.as_mut(), restore.remove(id)) {
-        widget.restore(&saved);
+    if let (Ok(widget), Some(saved)) = (slot.as_mut(), restore.remove(id))
+        && let Err(why) = widget.restore(&saved)
+    {
+        let notice = format!(
+            "This link's settings for the widget could not be used ({why}); it starts as the lesson set it up."
+        );
+        ui.ctx().data_mut(|d| d.insert_temp(notice_id(id), notice));
     }
     widget_frame(ui, id, &spec.name, slot);
+}
+
+/// Where a widget's notice about its link is kept.
+fn notice_id(widget: &str) -> egui::Id {
+    egui::Id::unique(("kinolab-link-notice", widget))
 }
 
 /// A live widget in its frame, or the reason it cannot be shown.
@@ -431,6 +441,10 @@ pub fn widget_frame(ui: &mut egui::Ui, id: &str, name: &str, slot: &mut WidgetSl
         .corner_radius(6.0)
         .show(ui, |ui| {
             ui.set_width(ui.available_width());
+            let notice: Option<String> = ui.ctx().data(|d| d.get_temp(notice_id(id)));
+            if let Some(notice) = notice {
+                ui.label(egui::RichText::new(notice).color(theme::error_color(ui)));
+            }
             ui.push_id(id, |ui| match slot {
                 Ok(widget) => {
                     let at = egui::Id::unique(("widget-rect", id));

@@ -134,6 +134,18 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
     Ok((settings, moment))
 }
 
+/// Whether `settings` of the widget `widget` are within its schema (for
+/// settings that did not come through [`read`], such as an old link's).
+pub fn check<T: Serialize>(widget: &str, settings: &T) -> Result<(), String> {
+    let params = kinolab_schema::settings::to_params(widget, settings)?;
+    let spec = kinolab_lessons::WidgetSpec {
+        name: widget.to_owned(),
+        params,
+        line: 0,
+    };
+    kinolab_schema::validate(&spec).map(|_| ())
+}
+
 /// An instant: a time from 0 to an hour.
 fn instant(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {

@@ -44,6 +44,11 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("blend-or-choose", behaviour::frog::create),
 ];
 
+/// The widgets that simulate something over time: each has the one
+/// player, links that carry its instant, and a run the command line
+/// reproduces ("Save run").
+pub const SIMULATING: &[&str] = &["zmp-cart-table"];
+
 /// Make the widget a lesson block names, or say why not (the same message
 /// the lesson checker gives, with the block's line).
 pub fn create(spec: &WidgetSpec) -> Result<Box<dyn LabWidget>, String> {

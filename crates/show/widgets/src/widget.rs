@@ -17,9 +17,59 @@ pub trait LabWidget {
         None
     }
 
-    /// Take back a [`LabWidget::state`] from a link; ignore what does not
-    /// decode (a damaged link never breaks the widget).
-    fn restore(&mut self, _state: &str) {}
+    /// Take back a [`LabWidget::state`] from a link. What cannot be used
+    /// (damaged, out of range, from another widget) is refused with a line
+    /// saying why; the widget then stays as the lesson set it up, and the
+    /// lab shows the line as a notice. Nothing a link holds may panic.
+    fn restore(&mut self, _state: &str) -> Result<(), String> {
+        Ok(())
+    }
+
+    /// Show the instant `t` seconds into the run (a widget that simulates
+    /// runs on as far as it needs to); nothing for a widget that does not.
+    fn seek(&mut self, _t: f64) {}
+
+    /// The run shown, as the command line reproduces it ("Save run"); `None`
+    /// for a widget that simulates nothing.
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        None
+    }
+}
+
+/// A widget's run for the command line: the input file, the command that
+/// reads it, and what the widget shows, as that command prints it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SavedRun {
+    /// The file's name (`push.zmp.json`) and text.
+    pub file: String,
+    pub text: String,
+    /// The command's arguments after `kinolab`, the file's name among them.
+    pub args: Vec<String>,
+    /// Where in the command's answer (a JSON pointer such as `/samples`)
+    /// the widget's own numbers are, and those numbers, up to the instant
+    /// it shows: the command must print exactly these.
+    pub shows: Vec<(String, serde_json::Value)>,
+}
+
+impl SavedRun {
+    /// The command as a learner would type it.
+    pub fn command(&self) -> String {
+        format!("kinolab {}", self.args.join(" "))
+    }
+}
+
+/// The range a parameter of the widget `widget` allows (its schema's
+/// `Number` or `Integer` kind): sliders take it from here, so a range is
+/// written only in the schema.
+pub fn range(widget: &str, param: &str) -> std::ops::RangeInclusive<f64> {
+    match kinolab_schema::find(widget)
+        .and_then(|w| w.param(param))
+        .map(|p| &p.kind)
+    {
+        Some(kinolab_schema::Kind::Number { min, max }) => *min..=*max,
+        Some(kinolab_schema::Kind::Integer { min, max }) => (*min as f64)..=(*max as f64),
+        _ => 0.0..=1.0,
+    }
 }
 
 /// Where, this frame, the widget being drawn keeps its animation flags.

@@ -270,7 +270,7 @@ impl LabWidget for GridPlanner {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         let b = self.world.bounds;
         let inside = |p: [f64; 2]| {
             (b.x_min..=b.x_max).contains(&p[0]) && (b.y_min..=b.y_max).contains(&p[1])
@@ -283,6 +283,7 @@ impl LabWidget for GridPlanner {
         {
             self.setup = s;
         }
+        Ok(())
     }
 }
 

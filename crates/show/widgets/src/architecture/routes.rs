@@ -211,9 +211,10 @@ impl LabWidget for SensingRoutes {
         link::changed(&self.wiring, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(w) = link::decode::<Wiring>(state) {
             self.wiring = w;
         }
+        Ok(())
     }
 }

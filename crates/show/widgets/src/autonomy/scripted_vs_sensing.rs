@@ -156,7 +156,7 @@ impl LabWidget for ScriptedVsSensing {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state) {
             self.setup = Setup {
                 placement_mm: clamp_finite(s.placement_mm, 0.0, 50.0),
@@ -164,6 +164,7 @@ impl LabWidget for ScriptedVsSensing {
                 seed: s.seed,
             };
         }
+        Ok(())
     }
 }
 

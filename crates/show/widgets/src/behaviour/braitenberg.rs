@@ -276,7 +276,7 @@ impl LabWidget for Vehicles {
         link::changed(&self.design, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(d) = link::decode::<Design>(state)
             && !d.wirings.is_empty()
             && d.wirings.len() <= 4
@@ -286,5 +286,6 @@ impl LabWidget for Vehicles {
             self.design = d;
             self.reset();
         }
+        Ok(())
     }
 }

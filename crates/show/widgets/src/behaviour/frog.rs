@@ -138,11 +138,12 @@ impl LabWidget for Frog {
         link::changed(&self.flies, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(f) = link::decode::<Flies>(state)
             && f.at.iter().flatten().all(|v| v.is_finite())
         {
             self.flies = f;
         }
+        Ok(())
     }
 }

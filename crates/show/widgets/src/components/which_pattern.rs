@@ -90,12 +90,13 @@ impl LabWidget for WhichPattern {
             .flatten()
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(p) = link::decode::<Picks>(state)
             && p.0.len() == REQUIREMENTS.len()
             && p.0.iter().flatten().all(|c| CHOICES.contains(&c.as_str()))
         {
             self.picks = p;
         }
+        Ok(())
     }
 }

@@ -45,7 +45,7 @@ impl LabWidget for Widget {
         link::changed(&self.now, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<SpeedProfile>(state)
             && [s.distance, s.max_speed, s.max_accel]
                 .iter()
@@ -57,6 +57,7 @@ impl LabWidget for Widget {
                 max_accel: s.max_accel.clamp(0.1, 5.0),
             };
         }
+        Ok(())
     }
 }
 

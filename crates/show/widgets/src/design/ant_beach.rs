@@ -178,7 +178,7 @@ impl LabWidget for AntBeach {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state)
             && (1.0..=ant::MAX_SIZE).contains(&s.size)
             && s.seed < 10_000
@@ -186,5 +186,6 @@ impl LabWidget for AntBeach {
             self.setup = s;
             self.new_beach();
         }
+        Ok(())
     }
 }

@@ -294,7 +294,7 @@ impl LabWidget for ThreeSlots {
         link::changed(&self.choice, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(c) = link::decode::<Choice>(state)
             && c.body < BODIES.len()
             && c.behaviours < BEHAVIOURS.len()
@@ -303,5 +303,6 @@ impl LabWidget for ThreeSlots {
             self.choice = c;
             self.rerun();
         }
+        Ok(())
     }
 }

@@ -328,7 +328,7 @@ impl LabWidget for CpgLab {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state)
             && GAITS.contains(&s.gait.as_str())
             && (0.2..=5.0).contains(&s.frequency)
@@ -338,5 +338,6 @@ impl LabWidget for CpgLab {
             self.setup = s;
             self.kick();
         }
+        Ok(())
     }
 }

@@ -466,12 +466,13 @@ impl LabWidget for GaitStudio {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state)
             && s.valid()
         {
             self.setup = s;
         }
+        Ok(())
     }
 }
 

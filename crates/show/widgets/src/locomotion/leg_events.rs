@@ -55,10 +55,11 @@ impl LabWidget for LegEvents {
         link::changed(&self.legs, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(legs) = link::decode::<u32>(state) {
             self.legs = legs.clamp(1, MAX_LEGS);
         }
+        Ok(())
     }
 }
 

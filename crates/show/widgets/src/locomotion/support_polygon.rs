@@ -219,7 +219,7 @@ impl LabWidget for SupportPolygon {
         link::changed(&self.stance, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(stance) = link::decode::<Stance>(state)
             && stance.feet.len() == self.initial.feet.len()
             && stance
@@ -240,6 +240,7 @@ impl LabWidget for SupportPolygon {
                 com: clamp(stance.com),
             };
         }
+        Ok(())
     }
 }
 

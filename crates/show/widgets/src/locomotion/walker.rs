@@ -267,7 +267,7 @@ impl LabWidget for HexapodWalker {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state)
             && GAITS.contains(&s.gait.as_str())
             && (0.0..=0.3).contains(&s.stride)
@@ -277,5 +277,6 @@ impl LabWidget for HexapodWalker {
             self.setup = s;
             self.rebuild();
         }
+        Ok(())
     }
 }

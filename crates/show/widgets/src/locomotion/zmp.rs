@@ -1,20 +1,29 @@
 //! The cart-table: a body on one foot, pushed. The ankle holds the zero
 //! moment point at the capture point as far as the foot reaches; the side
 //! view shows the body, the foot, the ZMP and the capture point, and a plot
-//! follows x, ẋ and the ZMP through the run.
+//! follows x, ẋ and the ZMP through the run, which the player plays,
+//! steps and scrubs.
+
+use std::sync::Arc;
 
 use egui::{Color32, Pos2, RichText, Sense, Stroke, vec2};
 use egui_plot::{Line, Plot, PlotPoints};
 use kinolab_common::Feedback;
 use kinolab_common::display::fixed;
-use kinolab_locomotion::balance::{CartTable, Recovery};
+use kinolab_locomotion::balance::{BalanceSample, CartTable, PushRun, Recovery};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::labels::Labels;
 use crate::draw::plot::{REFERENCE, series_legend, series_lines};
 use crate::draw::{PlaneView, canvas};
-use crate::widget::{LabWidget, Params, feedback_ui};
-use crate::{link, theme};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::player::{Player, Simulation};
+use crate::theme;
+use crate::widget::{LabWidget, Params, SavedRun, feedback_ui, range};
+
+/// The widget's name in the schema.
+const NAME: &str = "zmp-cart-table";
 
 /// The plotted series, in palette order.
 const NAMES: [&str; 3] = ["x (CoM)", "v (CoM speed)", "ZMP"];
@@ -26,68 +35,137 @@ const TOE: f64 = 0.15;
 const DURATION: f64 = 4.0;
 const DT: f64 = 0.005;
 
+/// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Setup {
+struct Settings {
+    height: f64,
+    push: f64,
+    task: Option<Task>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum Task {
+    LargestPush,
+}
+
+/// The links of the first format: the two sliders.
+#[derive(Deserialize)]
+struct Legacy {
     height: f64,
     push: f64,
 }
 
+impl Settings {
+    /// The push as a run file (`kinolab zmp` reads it).
+    fn run_file(&self) -> PushRun {
+        PushRun {
+            height: self.height,
+            heel: HEEL,
+            toe: TOE,
+            x0: 0.0,
+            push: self.push,
+            duration: DURATION,
+            dt: DT,
+        }
+    }
+}
+
+/// A push's run, played a step at a time (the core computes it whole).
+#[derive(Debug, Clone)]
+struct Pushed {
+    run: Arc<Recovery>,
+    k: usize,
+}
+
+impl Simulation for Pushed {
+    type Tick = BalanceSample;
+    type Event = ();
+
+    fn step(&mut self) -> Option<BalanceSample> {
+        let next = self.run.samples.get(self.k + 1).copied()?;
+        self.k += 1;
+        Some(next)
+    }
+
+    fn time(&self) -> f64 {
+        self.run.samples.get(self.k).map_or(0.0, |s| s.t)
+    }
+
+    fn dt(&self) -> f64 {
+        DT
+    }
+
+    fn spring(&mut self, (): &()) {}
+}
+
+impl Pushed {
+    fn now(&self) -> Option<BalanceSample> {
+        self.run.samples.get(self.k).copied()
+    }
+}
+
 struct ZmpCartTable {
-    setup: Setup,
-    initial: Setup,
-    run: Option<Recovery>,
-    /// Seconds into the run being shown.
-    t: f64,
-    playing: bool,
-    task: bool,
+    settings: Settings,
+    initial: Settings,
+    /// The run the settings make, whole, and the player that plays it.
+    run: Option<Arc<Recovery>>,
+    player: Option<Player<Pushed>>,
     feedback: Option<Feedback>,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let setup = Setup {
-        height: p.number("height").unwrap_or(0.8),
-        push: p.number("push").unwrap_or(0.2),
-    };
-    Ok(Box::new(ZmpCartTable {
-        initial: setup.clone(),
-        setup,
+    let settings: Settings = p.settings()?;
+    let mut widget = ZmpCartTable {
+        initial: settings.clone(),
+        settings,
         run: None,
-        t: 0.0,
-        playing: false,
-        task: p.choice("task") == Some("largest-push"),
+        player: None,
         feedback: None,
-    }))
+    };
+    widget.rebuild();
+    Ok(Box::new(widget))
 }
 
 impl ZmpCartTable {
     fn table(&self) -> Option<CartTable> {
-        CartTable::new(self.setup.height, HEEL, TOE).ok()
+        CartTable::new(self.settings.height, HEEL, TOE).ok()
+    }
+
+    /// The run the settings make, paused at its start.
+    fn rebuild(&mut self) {
+        self.run = self.settings.run_file().run().ok().map(Arc::new);
+        self.player = self
+            .run
+            .clone()
+            .map(|run| Player::new(Pushed { run, k: 0 }));
+        self.feedback = None;
     }
 
     fn controls(&mut self, ui: &mut egui::Ui) {
-        let before = self.setup.clone();
-        ui.add(egui::Slider::new(&mut self.setup.height, 0.3..=1.5).text("CoM height z_c (m)"));
+        let before = self.settings.clone();
+        let s = &mut self.settings;
+        ui.add(egui::Slider::new(&mut s.height, range(NAME, "height")).text("CoM height z_c (m)"));
         ui.add(
-            egui::Slider::new(&mut self.setup.push, 0.0..=2.0)
+            egui::Slider::new(&mut s.push, range(NAME, "push"))
                 .step_by(0.005)
                 .text("push (m/s)"),
         );
-        if self.setup != before {
-            self.run = None;
-            self.feedback = None;
+        if self.settings != before {
+            self.rebuild();
         }
         ui.horizontal_wrapped(|ui| {
-            if ui.button("Push").clicked() {
-                self.run = self
-                    .table()
-                    .and_then(|t| t.push(0.0, self.setup.push, DURATION, DT).ok());
-                self.t = 0.0;
-                self.playing = true;
+            if ui
+                .button("Push")
+                .on_hover_text("Give the body its speed and play")
+                .clicked()
+                && let Some(player) = &mut self.player
+            {
+                player.restart();
             }
             if ui.button("Reset").clicked() {
-                self.setup = self.initial.clone();
-                self.run = None;
-                self.feedback = None;
+                self.settings = self.initial.clone();
+                self.rebuild();
             }
             if let Some(table) = self.table() {
                 ui.label(format!("ω = √(g / z_c) = {} 1/s", fixed(table.omega(), 2)));
@@ -95,19 +173,16 @@ impl ZmpCartTable {
         });
     }
 
-    /// The sample shown now, if a push has been made.
-    fn now(&self) -> Option<kinolab_locomotion::balance::BalanceSample> {
-        let run = self.run.as_ref()?;
-        let k = ((self.t / DT) as usize).min(run.samples.len().saturating_sub(1));
-        run.samples.get(k).copied()
+    /// The sample shown now (the body at rest before the push plays).
+    fn now(&mut self) -> Option<BalanceSample> {
+        self.player.as_mut()?.state().now()
     }
 
-    fn side_view(&self, ui: &mut egui::Ui) {
+    fn side_view(&mut self, ui: &mut egui::Ui) -> egui::Rect {
         let width = ui.available_width();
-        let height = 280.0;
-        let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, 280.0), Sense::hover());
         let rect = response.rect;
-        let z = self.setup.height;
+        let z = self.settings.height;
         let view = PlaneView::fit(rect.shrink(12.0), [-0.35, -0.08], [0.65, z + 0.12]);
         let ink = ui.visuals().text_color();
         let ground = [view.to_screen([-0.35, 0.0]), view.to_screen([0.65, 0.0])];
@@ -140,8 +215,11 @@ impl ZmpCartTable {
         };
         mark(zmp, theme::good_color(ui), "ZMP");
         if s.is_some() {
-            let at = wanted.clamp(-0.35, 0.65);
-            mark(at, theme::error_color(ui), "capture point");
+            mark(
+                wanted.clamp(-0.35, 0.65),
+                theme::error_color(ui),
+                "capture point",
+            );
         }
         let com_ground: Pos2 = view.to_screen([x, 0.0]);
         painter.line_segment(
@@ -150,80 +228,227 @@ impl ZmpCartTable {
         );
         labels.avoid_line(body, com_ground);
         labels.draw(&painter, &egui::FontId::proportional(theme::LABEL_SIZE));
+        rect
     }
 
-    fn plot(&self, ui: &mut egui::Ui) {
-        let Some(run) = &self.run else { return };
-        let series = |f: &dyn Fn(&kinolab_locomotion::balance::BalanceSample) -> f64| -> PlotPoints<'static> {
-            run.samples.iter().map(|s| [s.t, f(s)]).collect()
+    /// x, ẋ and the ZMP against time, with the instant shown.
+    fn series(&self) -> Vec<(&'static str, Vec<[f64; 2]>)> {
+        let Some(run) = &self.run else {
+            return Vec::new();
         };
+        let run = &run.samples;
+        let values: [fn(&BalanceSample) -> f64; 3] = [|s| s.x, |s| s.xd, |s| s.zmp];
+        NAMES
+            .into_iter()
+            .zip(values)
+            .map(|(name, f)| (name, run.iter().map(|s| [s.t, f(s)]).collect()))
+            .collect()
+    }
+
+    fn plot(&self, ui: &mut egui::Ui) -> egui::Rect {
+        let now = self.player.as_ref().map_or(0.0, Player::time);
+        let series = self.series();
+        let top = ui.cursor().min;
         Plot::new(ui.scope_id().with("zmp-plot"))
             .height(170.0)
             .x_axis_label("t (s)")
             .y_axis_label("m, m/s")
             .allow_scroll(false)
             .show(ui, |plot| {
-                let values = [series(&|s| s.x), series(&|s| s.xd), series(&|s| s.zmp)];
-                series_lines(plot, NAMES.into_iter().zip(values).collect(), Some(self.t));
-                plot.line(Line::new("toe", series(&|_| TOE)).color(REFERENCE));
+                let lines = series
+                    .iter()
+                    .map(|(name, points)| (*name, PlotPoints::from(points.clone())))
+                    .collect();
+                series_lines(plot, lines, Some(now));
+                let toe: PlotPoints<'_> = vec![[0.0, TOE], [DURATION, TOE]].into();
+                plot.line(Line::new("toe", toe).color(REFERENCE));
             });
         series_legend(ui, &NAMES, &[("toe and now", REFERENCE)]);
+        egui::Rect::from_min_max(
+            top,
+            egui::pos2(top.x + ui.available_width(), ui.cursor().min.y),
+        )
     }
 
-    fn verdict(&self) -> String {
-        match &self.run {
-            None => "Press Push to give the body the chosen speed.".to_owned(),
-            Some(r) => match r.left_foot_at {
-                Some(t) => format!(
-                    "From t = {} s the ZMP this motion needs lies past the toe. The real ZMP stays on the foot, at the toe, and the body falls forwards.",
-                    fixed(t, 2)
-                ),
-                None if r.recovered => "Caught: the capture point stayed on the foot, and the body came to rest over it.".to_owned(),
-                None => "Still settling.".to_owned(),
-            },
+    fn verdict(&mut self) -> String {
+        let (Some(player), Some(run)) = (&self.player, &self.run) else {
+            return "These settings cannot be pushed.".to_owned();
+        };
+        if player.cursor() == 0 {
+            return "Press Push (or Play) to give the body the chosen speed.".to_owned();
         }
+        match run.left_foot_at {
+            Some(t) if player.time() >= t => format!(
+                "From t = {} s the ZMP this motion needs lies past the toe. The real ZMP stays on the foot, at the toe, and the body falls forwards.",
+                fixed(t, 2)
+            ),
+            None if run.recovered && player.over() => {
+                "Caught: the capture point stayed on the foot, and the body came to rest over it."
+                    .to_owned()
+            }
+            _ => "Still settling.".to_owned(),
+        }
+    }
+
+    fn exports(&self, ui: &mut egui::Ui, view: egui::Rect, plot: egui::Rect) {
+        let series = || export::series_csv("t (s)", &self.series());
+        let file =
+            || serde_json::to_string_pretty(&self.settings.run_file()).map_err(|e| e.to_string());
+        export::bar(
+            ui,
+            ui.scope_id().with("zmp-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-cart-table.png",
+                    rect: view.union(plot),
+                },
+                Export::Csv {
+                    file: "kinolab-cart-table.csv",
+                    make: &series,
+                },
+                Export::Run {
+                    file: "push.zmp.json",
+                    command: "kinolab zmp push.zmp.json",
+                    make: &file,
+                },
+            ],
+        );
+    }
+
+    fn task_ui(&mut self, ui: &mut egui::Ui) {
+        ui.separator();
+        ui.label(RichText::new("Task: find the largest push the ankle can still catch (to within 5 %), then check.").strong());
+        if ui.button("Check").clicked()
+            && let Some(table) = self.table()
+        {
+            self.feedback = Some(
+                kinolab_locomotion::exercise::largest_push(&table, self.settings.push)
+                    .unwrap_or_else(|e| Feedback::not_yet(e.to_string())),
+            );
+        }
+        feedback_ui(ui, self.feedback.as_ref());
     }
 }
 
 impl LabWidget for ZmpCartTable {
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
-        self.side_view(ui);
-        ui.label(RichText::new(self.verdict()).strong());
-        self.plot(ui);
-        if self.playing {
-            self.t += crate::widget::frame_dt(ui);
-            if self.t >= DURATION {
-                self.t = DURATION;
-                self.playing = false;
-            }
-            crate::widget::animate(ui);
+        if let Some(player) = &mut self.player {
+            player.controls(ui);
         }
-        if self.task {
-            ui.separator();
-            ui.label(RichText::new("Task: find the largest push the ankle can still catch (to within 5 %), then check.").strong());
-            if ui.button("Check").clicked()
-                && let Some(table) = self.table()
-            {
-                self.feedback = Some(
-                    kinolab_locomotion::exercise::largest_push(&table, self.setup.push)
-                        .unwrap_or_else(|e| Feedback::not_yet(e.to_string())),
-                );
-            }
-            feedback_ui(ui, self.feedback.as_ref());
+        let view = self.side_view(ui);
+        if let Some(player) = &mut self.player {
+            player.timeline(
+                ui,
+                "Time since the push",
+                (DURATION / DT) as usize,
+                &mut |_, _, _, _| {},
+            );
+            player.run(ui, 400);
+        }
+        let verdict = self.verdict();
+        ui.label(RichText::new(verdict).strong());
+        let plot = self.plot(ui);
+        self.exports(ui, view, plot);
+        if self.settings.task == Some(Task::LargestPush) {
+            self.task_ui(ui);
         }
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.setup, &self.initial)
+        let moment = self.player.as_ref().map(Player::moment).unwrap_or_default();
+        link::write(NAME, &self.settings, &self.initial, &moment)
     }
 
-    fn restore(&mut self, state: &str) {
-        if let Some(s) = link::decode::<Setup>(state)
-            && (0.3..=1.5).contains(&s.height)
-            && (0.0..=2.0).contains(&s.push)
-        {
-            self.setup = s;
+    fn restore(&mut self, state: &str) -> Result<(), String> {
+        let (settings, moment) = match link::read::<Settings, ()>(NAME, state) {
+            Ok(read) => read,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => (
+                    Settings {
+                        height: old.height,
+                        push: old.push,
+                        ..self.initial.clone()
+                    },
+                    Moment::default(),
+                ),
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        self.settings = settings;
+        self.rebuild();
+        if let Some(player) = &mut self.player {
+            player.replay(&moment.events, moment.instant);
         }
+        Ok(())
+    }
+
+    fn seek(&mut self, t: f64) {
+        if let Some(player) = &mut self.player {
+            player.seek_time(t);
+        }
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        let (player, run) = (self.player.as_ref()?, self.run.as_ref()?);
+        let shown = &run.samples[..=player.cursor()];
+        Some(SavedRun {
+            file: "push.zmp.json".into(),
+            text: serde_json::to_string_pretty(&self.settings.run_file()).ok()?,
+            args: vec!["zmp".into(), "push.zmp.json".into()],
+            shows: vec![(
+                "/samples".into(),
+                kinolab_common::display::tidy_report(&shown).ok()?,
+            )],
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::{create, spec};
+
+    fn widget(params: &[(&str, &str)]) -> ZmpCartTable {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        let mut w = ZmpCartTable {
+            initial: settings.clone(),
+            settings,
+            run: None,
+            player: None,
+            feedback: None,
+        };
+        w.rebuild();
+        w
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = link::encode(&(1.2_f64, 0.35_f64)).unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!((w.settings.height, w.settings.push), (1.2, 0.35));
+        // Out of the schema's range: refused, the lesson's settings kept.
+        let bad = link::encode(&(9.0_f64, 0.35_f64)).unwrap_or_default();
+        let mut w = widget(&[("push", "0.4")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.push, 0.4);
+        assert!(create(&spec(NAME, &[])).is_ok());
+    }
+
+    #[test]
+    fn the_instant_travels_in_the_link() {
+        let mut w = widget(&[("push", "0.5")]);
+        w.seek(1.25);
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings.push, 0.5);
+        assert_eq!(again.now(), w.now());
+        assert!((again.player.as_ref().map_or(0.0, Player::time) - 1.25).abs() < 1e-9);
+        assert_eq!(again.saved_run(), w.saved_run());
     }
 }

@@ -237,7 +237,7 @@ impl LabWidget for DhLink {
             .flatten()
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(row) = state_link::decode::<[f64; 4]>(state)
             && row.iter().all(|v| v.is_finite())
         {
@@ -248,6 +248,7 @@ impl LabWidget for DhLink {
                 row[3].clamp(-180.0, 180.0),
             ];
         }
+        Ok(())
     }
 }
 
@@ -266,10 +267,10 @@ mod tests {
         };
         assert_eq!(w.state(), None, "as the lesson set it up");
         let state = crate::link::encode(&[0.1, -90.0, 0.0, 45.0]).unwrap_or_default();
-        w.restore(&state);
+        let _ = w.restore(&state);
         assert_eq!(w.state(), Some(state));
         // Out-of-range values from a damaged link are clamped, never kept.
-        w.restore(&crate::link::encode(&[9.0, 0.0, 0.0, 0.0]).unwrap_or_default());
+        let _ = w.restore(&crate::link::encode(&[9.0, 0.0, 0.0, 0.0]).unwrap_or_default());
         assert_eq!(w.state(), crate::link::encode(&[1.0, 0.0, 0.0, 0.0]));
         assert!(create(&spec("dh-link", &[("row", "1, 2, 3")])).is_err());
         assert!(create(&spec("dh-link", &[("convention", "craig")])).is_err());

@@ -29,24 +29,20 @@ impl<S: Simulation> Player<S> {
     pub fn controls(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             if ui
-                .button("⏮ Restart")
+                .button("Restart")
                 .on_hover_text("Back to the start, and play")
                 .clicked()
             {
                 self.restart();
             }
             if ui
-                .button("◀ Back")
+                .button("Back")
                 .on_hover_text("One tick back (←)")
                 .clicked()
             {
                 self.step_back();
             }
-            let label = if self.playing {
-                "⏸ Pause"
-            } else {
-                "▶ Play"
-            };
+            let label = if self.playing { "Pause" } else { "Play" };
             if ui
                 .button(label)
                 .on_hover_text("Play or pause (Space)")
@@ -54,11 +50,7 @@ impl<S: Simulation> Player<S> {
             {
                 self.toggle();
             }
-            if ui
-                .button("Step ▶")
-                .on_hover_text("One tick on (→)")
-                .clicked()
-            {
+            if ui.button("Step").on_hover_text("One tick on (→)").clicked() {
                 self.playing = false;
                 self.step_forward();
             }
@@ -79,14 +71,22 @@ impl<S: Simulation> Player<S> {
     /// "t = 12.40 s", with how far the run has been recorded when the
     /// instant shown is earlier, and why it stopped.
     pub fn time_label(&self) -> String {
-        let mut text = format!("t = {} s", fixed(self.time(), 2));
+        let decimals = self.decimals();
+        let mut text = format!("t = {} s", fixed(self.time(), decimals));
         if !self.at_end() {
-            text += &format!(" (recorded to {} s)", fixed(self.time_at(self.len()), 1));
+            let recorded = fixed(self.time_at(self.len()), decimals.min(1));
+            text += &format!(" (recorded to {recorded} s)");
         }
         if self.full() {
             text += &format!("; the recording is full at {} ticks", super::MAX_TICKS);
         }
         text
+    }
+
+    /// Decimals enough to tell one tick from the next (2 to 4).
+    fn decimals(&self) -> usize {
+        let dt = self.live.dt().max(1e-4);
+        (-dt.log10()).ceil().clamp(2.0, 4.0) as usize
     }
 
     fn toggle(&mut self) {

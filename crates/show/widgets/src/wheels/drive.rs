@@ -463,7 +463,7 @@ impl LabWidget for Drive {
         link::changed(&self.command, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(c) = link::decode::<Command>(state)
             && c.spins.len() == self.chassis.wheels().len()
             && c.twist.iter().all(|v| v.is_finite())
@@ -483,6 +483,7 @@ impl LabWidget for Drive {
                 mode: c.mode,
             };
         }
+        Ok(())
     }
 }
 

@@ -180,7 +180,7 @@ impl LabWidget for FrameRotation {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state)
             && s.theta_deg.is_finite()
             && s.inertial.iter().all(|v| v.is_finite())
@@ -190,6 +190,7 @@ impl LabWidget for FrameRotation {
                 inertial: s.inertial.map(|v| v.clamp(-1.0, 1.0)),
             };
         }
+        Ok(())
     }
 }
 

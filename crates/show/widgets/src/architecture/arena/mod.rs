@@ -206,7 +206,7 @@ impl LabWidget for ArchitectureArena {
         link::changed(&self.design, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(d) = link::decode::<Design>(state)
             && WORLDS.contains(&d.world.as_str())
             && (0.0..=20.0).contains(&d.planning_cost_ms)
@@ -215,5 +215,6 @@ impl LabWidget for ArchitectureArena {
             self.design = d;
             self.rebuild();
         }
+        Ok(())
     }
 }

@@ -281,13 +281,14 @@ impl LabWidget for Arena {
         link::changed(&self.design, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(design) = link::decode::<Design>(state)
             && design.setup().is_ok()
         {
             self.design = design;
             self.rebuild();
         }
+        Ok(())
     }
 }
 

@@ -434,7 +434,7 @@ impl LabWidget for ComponentLab {
         link::changed(&self.setup, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(s) = link::decode::<Setup>(state)
             && SYSTEMS.contains(&s.system.as_str())
             && (0.0..=0.5).contains(&s.fixed)
@@ -447,5 +447,6 @@ impl LabWidget for ComponentLab {
             self.setup = s;
             self.rebuild(0.0);
         }
+        Ok(())
     }
 }

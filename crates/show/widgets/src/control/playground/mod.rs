@@ -180,11 +180,12 @@ impl LabWidget for Playground {
             .flatten()
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some((set, tab)) = link::decode::<LinkState>(state).and_then(LinkState::settings) {
             self.set = set;
             self.tab = tab;
         }
+        Ok(())
     }
 }
 

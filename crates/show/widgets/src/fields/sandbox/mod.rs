@@ -197,9 +197,9 @@ impl LabWidget for Sandbox {
         link::changed(&self.design, &self.initial)
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         let Some(design) = link::decode::<Design>(state) else {
-            return;
+            return Err("it is not a state of the field sandbox".into());
         };
         if let Some(p) = PRESETS.iter().find(|p| p.id == design.preset) {
             self.area = Rect::from(p.area);
@@ -207,6 +207,7 @@ impl LabWidget for Sandbox {
         }
         self.design = design;
         self.changed();
+        Ok(())
     }
 }
 
@@ -257,10 +258,10 @@ mod tests {
         s.changed();
         let link = s.state().unwrap();
         let mut t = sandbox(&[("preset", "rock-on-the-axis")]);
-        t.restore(&link);
+        let _ = t.restore(&link);
         assert_eq!(t.design, s.design);
         assert_eq!(t.preset_pieces, 2);
-        t.restore("zzz");
+        let _ = t.restore("zzz");
         assert_eq!(t.design, s.design, "a damaged link changes nothing");
     }
 }

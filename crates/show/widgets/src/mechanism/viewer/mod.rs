@@ -319,9 +319,9 @@ impl LabWidget for Viewer {
         changed.then(|| link::encode(&state)).flatten()
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         let Some(state) = link::decode::<LinkState>(state) else {
-            return;
+            return Err("it is not a state of the mechanism viewer".into());
         };
         if let Some(kind) = VIEWS.get(usize::from(state.view)) {
             self.camera = Camera::new(*kind, self.camera.centre, self.camera.extent);
@@ -329,6 +329,7 @@ impl LabWidget for Viewer {
         if state.driven.iter().all(|v| v.is_finite()) {
             let _ = self.set_driven(&state.driven);
         }
+        Ok(())
     }
 }
 
@@ -359,7 +360,7 @@ mod tests {
             driven: vec![10.0, -20.0],
         })
         .unwrap_or_default();
-        w.restore(&side);
+        let _ = w.restore(&side);
         let Some(back) = w.state().and_then(|s| link::decode::<LinkState>(&s)) else {
             panic!("a changed viewer goes into the link")
         };

@@ -197,10 +197,11 @@ impl LabWidget for Workbench {
             .flatten()
     }
 
-    fn restore(&mut self, state: &str) {
+    fn restore(&mut self, state: &str) -> Result<(), String> {
         if let Some(c) = link::decode::<LinkLayout>(state).and_then(LinkLayout::chassis) {
             self.load(c);
         }
+        Ok(())
     }
 }
 

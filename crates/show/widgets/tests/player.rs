@@ -1,0 +1,107 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
+//! Every widget that simulates has the one player: play, pause, a tick
+//! back and on, and a link that carries the instant, driven as a learner
+//! drives them; the restored widget shows what the original showed.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use kinolab_widgets::widget::LabWidget;
+
+use kinolab_widgets::registry::SIMULATING;
+
+fn widget(name: &str) -> Box<dyn LabWidget> {
+    kinolab_widgets::registry::create(&kinolab_widgets::registry::spec(name, &[])).unwrap()
+}
+
+struct Host {
+    widget: Box<dyn LabWidget>,
+    ready: bool,
+}
+
+fn harness(widget: Box<dyn LabWidget>) -> Harness<'static, Host> {
+    Harness::builder()
+        .with_size(egui::vec2(1200.0, 3000.0))
+        .build_ui_state(
+            |ui, host: &mut Host| {
+                if host.ready {
+                    host.widget.ui(ui);
+                } else {
+                    kinolab_widgets::theme::install(ui.ctx());
+                    host.ready = true;
+                }
+            },
+            Host {
+                widget,
+                ready: false,
+            },
+        )
+}
+
+/// The time the player shows, read from its label.
+fn shown_time(h: &Harness<'_, Host>) -> f64 {
+    use egui_kittest::kittest::NodeT as _;
+    let label = h
+        .get_all(egui_kittest::kittest::by())
+        .filter_map(|n| n.accesskit_node().value())
+        .find(|l| l.starts_with("t = "))
+        .expect("the player's time");
+    let text = label.trim_start_matches("t = ");
+    text.split(' ').next().unwrap().parse().unwrap()
+}
+
+#[test]
+fn every_simulating_widget_plays_steps_and_scrubs_with_one_player() {
+    for name in SIMULATING {
+        let mut h = harness(widget(name));
+        h.run_steps(2);
+        assert_eq!(shown_time(&h), 0.0, "{name} starts paused at 0");
+        h.get_by_label("Play").click();
+        h.run_steps(30);
+        h.get_by_label("Pause").click();
+        h.run_steps(2);
+        let played = shown_time(&h);
+        assert!(played > 0.0, "{name} played");
+        h.get_by_label("Back").click();
+        h.run_steps(2);
+        let back = shown_time(&h);
+        assert!(back < played, "{name}: back from {played} to {back}");
+        h.get_by_label("Step").click();
+        h.run_steps(2);
+        assert_eq!(
+            shown_time(&h),
+            played,
+            "{name}: a tick on lands where it was"
+        );
+        // The link carries the instant: a fresh widget opens there and
+        // shows the same run.
+        let link = h
+            .state()
+            .widget
+            .state()
+            .expect("a played widget has a state");
+        let mut again = widget(name);
+        again.restore(&link).unwrap();
+        let shown = h.state_mut().widget.saved_run();
+        assert_eq!(again.saved_run(), shown, "{name}");
+        let mut h2 = harness(again);
+        h2.run_steps(2);
+        assert_eq!(shown_time(&h2), played, "{name} reopened at its instant");
+    }
+}
+
+#[test]
+fn every_simulating_widget_saves_a_run_the_command_line_reads() {
+    for name in SIMULATING {
+        let mut w = widget(name);
+        w.seek(0.5);
+        let run = w
+            .saved_run()
+            .unwrap_or_else(|| panic!("{name} saves no run"));
+        assert!(run.args.contains(&run.file), "{name}: {:?}", run.args);
+        assert!(
+            serde_json::from_str::<serde_json::Value>(&run.text).is_ok(),
+            "{name}"
+        );
+        assert!(!run.shows.is_empty(), "{name}");
+    }
+}
