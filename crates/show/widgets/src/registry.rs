@@ -47,7 +47,20 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
 /// The widgets that simulate something over time: each has the one
 /// player, links that carry its instant, and a run the command line
 /// reproduces ("Save run").
-pub const SIMULATING: &[&str] = &["zmp-cart-table"];
+pub const SIMULATING: &[&str] = &[
+    "controller-playground",
+    "behaviour-arena",
+    "braitenberg",
+    "field-sandbox",
+    "grid-planner",
+    "architecture-arena",
+    "component-lab",
+    "gait-studio",
+    "hexapod-walker",
+    "cpg-lab",
+    "zmp-cart-table",
+    "ant-beach",
+];
 
 /// Make the widget a lesson block names, or say why not (the same message
 /// the lesson checker gives, with the block's line).

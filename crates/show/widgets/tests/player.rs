@@ -49,9 +49,24 @@ fn shown_time(h: &Harness<'_, Host>) -> f64 {
     text.split(' ').next().unwrap().parse().unwrap()
 }
 
+/// Run `check` for every simulating widget; fail naming every widget
+/// that failed (so each can be worked on apart).
+fn for_each(check: fn(&str)) {
+    let failed: Vec<&str> = SIMULATING
+        .iter()
+        .copied()
+        .filter(|name| std::panic::catch_unwind(|| check(name)).is_err())
+        .collect();
+    assert!(failed.is_empty(), "failed: {failed:?}");
+}
+
 #[test]
 fn every_simulating_widget_plays_steps_and_scrubs_with_one_player() {
-    for name in SIMULATING {
+    for_each(plays_steps_and_scrubs);
+}
+
+fn plays_steps_and_scrubs(name: &str) {
+    {
         let mut h = harness(widget(name));
         h.run_steps(2);
         assert_eq!(shown_time(&h), 0.0, "{name} starts paused at 0");
@@ -91,7 +106,11 @@ fn every_simulating_widget_plays_steps_and_scrubs_with_one_player() {
 
 #[test]
 fn every_simulating_widget_saves_a_run_the_command_line_reads() {
-    for name in SIMULATING {
+    for_each(saves_a_run);
+}
+
+fn saves_a_run(name: &str) {
+    {
         let mut w = widget(name);
         w.seek(0.5);
         let run = w
