@@ -1,0 +1,182 @@
+//! What went wrong in a learner's script, in a learner's words: what, on
+//! which line and column, at what simulated time, and what to look at.
+
+use std::fmt;
+
+use kinolab_common::display::fixed;
+use rhai::{EvalAltResult, ParseError, Position};
+
+use crate::sandbox::LIMITS;
+use crate::script::Signature;
+
+/// The kind of problem, for tests and for the stepper's colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// The code does not parse.
+    Syntax,
+    /// The function the lab calls is missing or takes other parameters.
+    Missing,
+    /// Too many operations in one call: a loop that never ends.
+    Endless,
+    /// Functions calling functions too deep: recursion that never stops.
+    TooDeep,
+    /// A string, array or map grown past its bound.
+    TooLarge,
+    /// The function returned something of the wrong shape.
+    Shape,
+    /// The function returned NaN or an infinity.
+    NotFinite,
+    /// Any other run-time error (an unknown variable, a wrong type, …).
+    Runtime,
+}
+
+/// A problem with a learner's script.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScriptError {
+    pub kind: ErrorKind,
+    /// What happened, in a sentence (with the time when it ran).
+    pub message: String,
+    /// Where, 1-based, when known.
+    pub line: Option<usize>,
+    pub column: Option<usize>,
+    /// The simulated time of the call, s (`None` before anything ran).
+    pub t: Option<f64>,
+}
+
+impl fmt::Display for ScriptError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.line, self.column) {
+            (Some(l), Some(c)) => write!(f, "line {l}, column {c}: {}", self.message),
+            (Some(l), None) => write!(f, "line {l}: {}", self.message),
+            _ => write!(f, "{}", self.message),
+        }
+    }
+}
+
+impl std::error::Error for ScriptError {}
+
+fn at(position: Position) -> (Option<usize>, Option<usize>) {
+    (position.line(), position.position())
+}
+
+/// " at t = 3.20 s", or nothing before the run.
+fn when(t: Option<f64>) -> String {
+    t.map_or(String::new(), |t| format!(" at t = {} s", fixed(t, 2)))
+}
+
+impl ScriptError {
+    fn new(kind: ErrorKind, message: String, position: Position, t: Option<f64>) -> Self {
+        let (line, column) = at(position);
+        Self {
+            kind,
+            message,
+            line,
+            column,
+            t,
+        }
+    }
+
+    pub(crate) fn too_long(len: usize, max: usize) -> Self {
+        let message = format!("the code is {len} bytes long; the lab takes at most {max}");
+        Self::new(ErrorKind::Syntax, message, Position::NONE, None)
+    }
+
+    /// The code does not parse.
+    pub(crate) fn syntax(e: &ParseError) -> Self {
+        let message = format!("{}: the code cannot run until this is fixed", e.err_type());
+        Self::new(ErrorKind::Syntax, message, e.position(), None)
+    }
+
+    /// The function is missing, or found with `found` parameter counts.
+    pub(crate) fn missing(signature: Signature, found: &[usize]) -> Self {
+        let wanted = signature.text();
+        let message = match found.first() {
+            None => format!("the lab calls `{wanted}`, and your code has no function `{}`", signature.name),
+            Some(n) => format!(
+                "`{}` takes {} parameters ({wanted}); yours takes {n}",
+                signature.name,
+                signature.params.len()
+            ),
+        };
+        Self::new(ErrorKind::Missing, message, Position::NONE, None)
+    }
+
+    /// The function returned `got` where `wanted` (a description) belongs.
+    pub fn shape(signature: Signature, wanted: &str, got: &str, t: f64) -> Self {
+        let message = format!(
+            "`{}` must return {wanted}; at t = {} s it returned `{got}`",
+            signature.name,
+            fixed(t, 2)
+        );
+        Self::new(ErrorKind::Shape, message, Position::NONE, Some(t))
+    }
+
+    /// The function returned a number that is not finite, for `what`.
+    pub fn not_finite(signature: Signature, what: &str, value: f64, t: f64) -> Self {
+        let message = format!(
+            "`{}` returned {value} for {what} at t = {} s: a division by zero, or the square root of a negative number?",
+            signature.name,
+            fixed(t, 2)
+        );
+        Self::new(ErrorKind::NotFinite, message, Position::NONE, Some(t))
+    }
+
+    /// An error while the function ran at `t`.
+    pub(crate) fn run(e: &EvalAltResult, t: f64, signature: Signature) -> Self {
+        let inner = e.unwrap_inner();
+        let position = inner.position();
+        let when = when(Some(t));
+        let (kind, message) = match inner {
+            EvalAltResult::ErrorTooManyOperations(_) => (
+                ErrorKind::Endless,
+                format!(
+                    "your function did more than {} steps{when}: is there a loop that never ends?",
+                    group(LIMITS.operations)
+                ),
+            ),
+            EvalAltResult::ErrorStackOverflow(_) => (
+                ErrorKind::TooDeep,
+                format!(
+                    "functions called functions more than {} deep{when}: does a function call itself and never stop?",
+                    LIMITS.call_depth
+                ),
+            ),
+            EvalAltResult::ErrorDataTooLarge(what, _) => (
+                ErrorKind::TooLarge,
+                format!(
+                    "your function made {} too large{when} (the bound is {} for strings and arrays, {} for maps): does something grow every time round a loop?",
+                    what.to_lowercase(),
+                    group(LIMITS.string as u64),
+                    group(LIMITS.map as u64)
+                ),
+            ),
+            other => (
+                ErrorKind::Runtime,
+                format!("in `{}`{when}: {}", signature.name, plain(other)),
+            ),
+        };
+        Self::new(kind, message, position, Some(t))
+    }
+}
+
+/// Rhai's own message without its position (the error carries that).
+fn plain(e: &EvalAltResult) -> String {
+    let text = e.to_string();
+    match text.rfind(" (line ") {
+        Some(i) if text.ends_with(')') => text[..i].to_owned(),
+        _ => text,
+    }
+}
+
+/// 100000 as "100 000".
+fn group(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(' ');
+        }
+        out.push(c);
+    }
+    out
+}

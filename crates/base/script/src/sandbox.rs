@@ -1,0 +1,91 @@
+//! The engine every script runs in: the standard pieces a learner needs
+//! (arithmetic, logic, maths, strings, arrays, maps), `print` and `plot`
+//! kept per call, and the bounds.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use rhai::Engine;
+use rhai::packages::{
+    ArithmeticPackage, BasicArrayPackage, BasicMapPackage, BasicMathPackage, BasicStringPackage,
+    CorePackage, LogicPackage, Package,
+};
+
+/// What bounds every call of a learner's function.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Operations (roughly, expressions evaluated) in one call.
+    pub operations: u64,
+    /// How deep functions may call functions.
+    pub call_depth: usize,
+    /// Characters in a string, items in an array, entries in a map.
+    pub string: usize,
+    pub array: usize,
+    pub map: usize,
+    /// Lines `print` may write in one call, and `plot` values.
+    pub prints: usize,
+}
+
+/// The lab's bounds: far above what a controller or a behaviour needs,
+/// far below what would freeze a tab.
+pub const LIMITS: Limits = Limits {
+    operations: 100_000,
+    call_depth: 32,
+    string: 10_000,
+    array: 10_000,
+    map: 1_000,
+    prints: 20,
+};
+
+/// What one call printed and plotted.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Output {
+    pub prints: Vec<String>,
+    pub plots: Vec<(String, f64)>,
+}
+
+/// Where the engine's `print` and `plot` put what they are given.
+pub(crate) type Sink = Rc<RefCell<Output>>;
+
+/// An engine with the lab's packages and bounds, writing to `sink`.
+pub(crate) fn engine(sink: &Sink) -> Engine {
+    let mut e = Engine::new_raw();
+    CorePackage::new().register_into_engine(&mut e);
+    ArithmeticPackage::new().register_into_engine(&mut e);
+    LogicPackage::new().register_into_engine(&mut e);
+    BasicMathPackage::new().register_into_engine(&mut e);
+    BasicStringPackage::new().register_into_engine(&mut e);
+    BasicArrayPackage::new().register_into_engine(&mut e);
+    BasicMapPackage::new().register_into_engine(&mut e);
+    e.set_max_operations(LIMITS.operations)
+        .set_max_call_levels(LIMITS.call_depth)
+        .set_max_expr_depths(64, 64)
+        .set_max_string_size(LIMITS.string)
+        .set_max_array_size(LIMITS.array)
+        .set_max_map_size(LIMITS.map)
+        .set_max_variables(1_000)
+        .set_max_functions(200);
+    let prints = sink.clone();
+    e.on_print(move |text| {
+        let mut out = prints.borrow_mut();
+        if out.prints.len() < LIMITS.prints {
+            out.prints.push(text.chars().take(200).collect());
+        }
+    });
+    e.on_debug(|_, _, _| {});
+    let plots = sink.clone();
+    e.register_fn("plot", move |name: &str, value: f64| {
+        let mut out = plots.borrow_mut();
+        if out.plots.len() < LIMITS.prints {
+            out.plots.push((name.chars().take(40).collect(), value));
+        }
+    });
+    let plots = sink.clone();
+    e.register_fn("plot", move |name: &str, value: i64| {
+        let mut out = plots.borrow_mut();
+        if out.plots.len() < LIMITS.prints {
+            out.plots.push((name.chars().take(40).collect(), value as f64));
+        }
+    });
+    e
+}

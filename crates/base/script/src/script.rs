@@ -1,0 +1,117 @@
+//! A learner's script: compiled once, its function called once per tick.
+
+use std::rc::Rc;
+
+use rhai::{AST, CallFnOptions, Dynamic, Engine, Map, Scope};
+
+use crate::error::ScriptError;
+use crate::sandbox::{Output, Sink, engine};
+
+/// The function a hook calls, as the learner must write it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Signature {
+    pub name: &'static str,
+    pub params: &'static [&'static str],
+}
+
+impl Signature {
+    /// `control(rho, alpha, beta)`.
+    pub fn text(&self) -> String {
+        format!("{}({})", self.name, self.params.join(", "))
+    }
+}
+
+/// The longest script the lab compiles, in bytes.
+pub const MAX_SOURCE: usize = 64 * 1024;
+
+/// A compiled script and what it keeps between calls. Cloning it clones
+/// that memory too, so a copy of a run replays exactly.
+#[derive(Clone)]
+pub struct Script {
+    engine: Rc<Engine>,
+    sink: Sink,
+    ast: Rc<AST>,
+    signature: Signature,
+    /// `this` inside the learner's function: a map that starts empty and
+    /// keeps whatever the function puts in it, call after call.
+    memory: Dynamic,
+}
+
+impl std::fmt::Debug for Script {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Script({})", self.signature.text())
+    }
+}
+
+impl PartialEq for Script {
+    /// The same code (compiled once, shared) with the same memory.
+    fn eq(&self, other: &Self) -> bool {
+        Rc::ptr_eq(&self.ast, &other.ast) && self.memory.to_string() == other.memory.to_string()
+    }
+}
+
+/// What one call gave back: the value, and what it printed and plotted.
+#[derive(Debug, Clone)]
+pub struct Call {
+    pub value: Dynamic,
+    pub output: Output,
+}
+
+impl Script {
+    /// Compile `source`, which must define `signature`'s function with its
+    /// parameters. A syntax error names the line and column.
+    pub fn compile(source: &str, signature: Signature) -> Result<Script, ScriptError> {
+        if source.len() > MAX_SOURCE {
+            return Err(ScriptError::too_long(source.len(), MAX_SOURCE));
+        }
+        let sink = Sink::default();
+        let engine = engine(&sink);
+        let ast = engine
+            .compile(source)
+            .map_err(|e| ScriptError::syntax(&e))?;
+        let found: Vec<usize> = ast
+            .iter_functions()
+            .filter(|f| f.name == signature.name)
+            .map(|f| f.params.len())
+            .collect();
+        if !found.contains(&signature.params.len()) {
+            return Err(ScriptError::missing(signature, &found));
+        }
+        Ok(Script {
+            engine: Rc::new(engine),
+            sink,
+            ast: Rc::new(ast),
+            signature,
+            memory: Dynamic::from_map(Map::new()),
+        })
+    }
+
+    pub fn signature(&self) -> Signature {
+        self.signature
+    }
+
+    /// What the function keeps between calls (`this`).
+    pub fn memory(&self) -> &Dynamic {
+        &self.memory
+    }
+
+    /// Call the function with `args` at simulated time `t`.
+    pub fn call(&mut self, args: Vec<Dynamic>, t: f64) -> Result<Call, ScriptError> {
+        *self.sink.borrow_mut() = Output::default();
+        let options = CallFnOptions::new()
+            .eval_ast(false)
+            .bind_this_ptr(&mut self.memory);
+        let value = self
+            .engine
+            .call_fn_with_options::<Dynamic>(
+                options,
+                &mut Scope::new(),
+                &self.ast,
+                self.signature.name,
+                args,
+            )
+            .map_err(|e| ScriptError::run(&e, t, self.signature));
+        let output = std::mem::take(&mut *self.sink.borrow_mut());
+        value.map(|value| Call { value, output })
+    }
+}

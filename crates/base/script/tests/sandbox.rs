@@ -1,0 +1,118 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
+//! The sandbox holds: hostile scripts stop with the documented message
+//! and the host goes on; syntax errors name their line and column;
+//! `this` keeps notes between calls; `print` and `plot` are kept per call.
+
+use kinolab_script::value::{finite, number};
+use kinolab_script::{ErrorKind, Script, Signature};
+
+const CONTROL: Signature = Signature {
+    name: "control",
+    params: &["rho", "alpha", "beta"],
+};
+
+fn compile(source: &str) -> Script {
+    Script::compile(source, CONTROL).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn call(script: &mut Script, t: f64) -> Result<[f64; 2], kinolab_script::ScriptError> {
+    let args = vec![number(1.0), number(0.5), number(-0.25)];
+    let out = script.call(args, t)?;
+    finite(&out.value, ["v", "omega"], CONTROL, t)
+}
+
+#[test]
+fn a_law_returns_its_command() {
+    let mut s = compile("fn control(rho, alpha, beta) { [3.0 * rho, 8.0 * alpha - 1.5 * beta] }");
+    assert_eq!(call(&mut s, 0.0).unwrap(), [3.0, 4.375]);
+}
+
+#[test]
+fn hostile_scripts_stop_with_a_message_in_words() {
+    let cases = [
+        (
+            "fn control(rho, alpha, beta) { loop { } }",
+            ErrorKind::Endless,
+            "your function did more than 100 000 steps at t = 3.20 s: is there a loop that never ends?",
+        ),
+        (
+            "fn deeper(n) { deeper(n + 1) } fn control(rho, alpha, beta) { deeper(0) }",
+            ErrorKind::TooDeep,
+            "more than 32 deep at t = 3.20 s",
+        ),
+        (
+            "fn control(rho, alpha, beta) { let a = []; a.pad(100000000, 0); [0.0, 0.0] }",
+            ErrorKind::TooLarge,
+            "too large at t = 3.20 s",
+        ),
+        (
+            "fn control(rho, alpha, beta) { let s = \"x\"; loop { s += s; } }",
+            ErrorKind::TooLarge,
+            "does something grow every time round a loop?",
+        ),
+        (
+            "fn control(rho, alpha, beta) { #{ v: 1.0 } }",
+            ErrorKind::Shape,
+            "`control` must return [v, omega], 2 numbers; at t = 3.20 s it returned `#{\"v\": 1.0}`",
+        ),
+        (
+            "fn control(rho, alpha, beta) { [0.0 / 0.0, 1.0] }",
+            ErrorKind::NotFinite,
+            "`control` returned NaN for v at t = 3.20 s",
+        ),
+        (
+            "fn control(rho, alpha, beta) { [speed, 1.0] }",
+            ErrorKind::Runtime,
+            "Variable not found: speed",
+        ),
+    ];
+    for (source, kind, words) in cases {
+        let mut s = compile(source);
+        let e = call(&mut s, 3.2).unwrap_err();
+        assert_eq!(e.kind, kind, "{source}: {e}");
+        assert!(e.message.contains(words), "{source}: {}", e.message);
+        assert_eq!(e.t, Some(3.2));
+        // The host goes on: the same script can be called again.
+        assert!(call(&mut s, 3.25).is_err());
+    }
+}
+
+#[test]
+fn errors_name_their_line_and_column() {
+    let e = Script::compile("fn control(rho, alpha, beta) {\n  let v = ;\n  [v, 0.0]\n}", CONTROL)
+        .unwrap_err();
+    assert_eq!((e.kind, e.line, e.column), (ErrorKind::Syntax, Some(2), Some(11)), "{e}");
+    let mut s = compile("fn control(rho, alpha, beta) {\n  [rho,\n   alpha + nope]\n}");
+    let e = call(&mut s, 1.0).unwrap_err();
+    assert_eq!((e.line, e.kind), (Some(3), ErrorKind::Runtime), "{e}");
+    let e = Script::compile("fn control(rho, alpha) { [0.0, 0.0] }", CONTROL).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Missing);
+    assert!(e.message.contains("takes 3 parameters"), "{e}");
+    let e = Script::compile("fn steer(x) { x }", CONTROL).unwrap_err();
+    assert!(e.message.contains("has no function `control`"), "{e}");
+}
+
+#[test]
+fn this_keeps_notes_between_calls_and_copies_keep_theirs() {
+    let mut s = compile(
+        "fn control(rho, alpha, beta) { if this.n == () { this.n = 0 } this.n += 1; [this.n * 1.0, 0.0] }",
+    );
+    assert_eq!(call(&mut s, 0.0).unwrap()[0], 1.0);
+    assert_eq!(call(&mut s, 0.1).unwrap()[0], 2.0);
+    let mut copy = s.clone();
+    assert_eq!(call(&mut copy, 0.2).unwrap()[0], 3.0);
+    assert_eq!(call(&mut copy, 0.3).unwrap()[0], 4.0);
+    assert_eq!(call(&mut s, 0.2).unwrap()[0], 3.0, "the original's notes are its own");
+}
+
+#[test]
+fn print_and_plot_are_kept_per_call() {
+    let mut s = compile(
+        "fn control(rho, alpha, beta) { print(`rho is ${rho}`); plot(\"rho\", rho); plot(\"k\", 2); [rho, 0.0] }",
+    );
+    let out = s.call(vec![number(1.5), number(0.0), number(0.0)], 0.0).unwrap();
+    assert_eq!(out.output.prints, vec!["rho is 1.5"]);
+    assert_eq!(out.output.plots, vec![("rho".to_owned(), 1.5), ("k".to_owned(), 2.0)]);
+    let out = s.call(vec![number(2.0), number(0.0), number(0.0)], 0.1).unwrap();
+    assert_eq!(out.output.prints, vec!["rho is 2.0"], "a fresh call starts empty");
+}
