@@ -10,7 +10,8 @@ use crate::sandbox::LIMITS;
 use crate::script::Signature;
 
 /// The kind of problem, for tests and for the stepper's colour.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum ErrorKind {
     /// The code does not parse.
     Syntax,
@@ -30,8 +31,9 @@ pub enum ErrorKind {
     Runtime,
 }
 
-/// A problem with a learner's script.
-#[derive(Debug, Clone, PartialEq)]
+/// A problem with a learner's script (as reports write it: `kind`,
+/// `message`, `line`, `column`, `t`).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ScriptError {
     pub kind: ErrorKind,
     /// What happened, in a sentence (with the time when it ran).
@@ -91,7 +93,10 @@ impl ScriptError {
     pub(crate) fn missing(signature: Signature, found: &[usize]) -> Self {
         let wanted = signature.text();
         let message = match found.first() {
-            None => format!("the lab calls `{wanted}`, and your code has no function `{}`", signature.name),
+            None => format!(
+                "the lab calls `{wanted}`, and your code has no function `{}`",
+                signature.name
+            ),
             Some(n) => format!(
                 "`{}` takes {} parameters ({wanted}); yours takes {n}",
                 signature.name,

@@ -38,7 +38,7 @@ pub const LIMITS: Limits = Limits {
 };
 
 /// What one call printed and plotted.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
 pub struct Output {
     pub prints: Vec<String>,
     pub plots: Vec<(String, f64)>,
@@ -84,7 +84,8 @@ pub(crate) fn engine(sink: &Sink) -> Engine {
     e.register_fn("plot", move |name: &str, value: i64| {
         let mut out = plots.borrow_mut();
         if out.plots.len() < LIMITS.prints {
-            out.plots.push((name.chars().take(40).collect(), value as f64));
+            out.plots
+                .push((name.chars().take(40).collect(), value as f64));
         }
     });
     e

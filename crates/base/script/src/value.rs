@@ -18,10 +18,7 @@ pub fn numbers(xs: &[f64]) -> Dynamic {
 
 /// A map from names to values.
 pub fn map<'a>(entries: impl IntoIterator<Item = (&'a str, Dynamic)>) -> Dynamic {
-    let map: Map = entries
-        .into_iter()
-        .map(|(k, v)| (k.into(), v))
-        .collect();
+    let map: Map = entries.into_iter().map(|(k, v)| (k.into(), v)).collect();
     Dynamic::from_map(map)
 }
 

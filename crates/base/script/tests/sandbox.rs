@@ -79,9 +79,16 @@ fn hostile_scripts_stop_with_a_message_in_words() {
 
 #[test]
 fn errors_name_their_line_and_column() {
-    let e = Script::compile("fn control(rho, alpha, beta) {\n  let v = ;\n  [v, 0.0]\n}", CONTROL)
-        .unwrap_err();
-    assert_eq!((e.kind, e.line, e.column), (ErrorKind::Syntax, Some(2), Some(11)), "{e}");
+    let e = Script::compile(
+        "fn control(rho, alpha, beta) {\n  let v = ;\n  [v, 0.0]\n}",
+        CONTROL,
+    )
+    .unwrap_err();
+    assert_eq!(
+        (e.kind, e.line, e.column),
+        (ErrorKind::Syntax, Some(2), Some(11)),
+        "{e}"
+    );
     let mut s = compile("fn control(rho, alpha, beta) {\n  [rho,\n   alpha + nope]\n}");
     let e = call(&mut s, 1.0).unwrap_err();
     assert_eq!((e.line, e.kind), (Some(3), ErrorKind::Runtime), "{e}");
@@ -102,7 +109,11 @@ fn this_keeps_notes_between_calls_and_copies_keep_theirs() {
     let mut copy = s.clone();
     assert_eq!(call(&mut copy, 0.2).unwrap()[0], 3.0);
     assert_eq!(call(&mut copy, 0.3).unwrap()[0], 4.0);
-    assert_eq!(call(&mut s, 0.2).unwrap()[0], 3.0, "the original's notes are its own");
+    assert_eq!(
+        call(&mut s, 0.2).unwrap()[0],
+        3.0,
+        "the original's notes are its own"
+    );
 }
 
 #[test]
@@ -110,9 +121,20 @@ fn print_and_plot_are_kept_per_call() {
     let mut s = compile(
         "fn control(rho, alpha, beta) { print(`rho is ${rho}`); plot(\"rho\", rho); plot(\"k\", 2); [rho, 0.0] }",
     );
-    let out = s.call(vec![number(1.5), number(0.0), number(0.0)], 0.0).unwrap();
+    let out = s
+        .call(vec![number(1.5), number(0.0), number(0.0)], 0.0)
+        .unwrap();
     assert_eq!(out.output.prints, vec!["rho is 1.5"]);
-    assert_eq!(out.output.plots, vec![("rho".to_owned(), 1.5), ("k".to_owned(), 2.0)]);
-    let out = s.call(vec![number(2.0), number(0.0), number(0.0)], 0.1).unwrap();
-    assert_eq!(out.output.prints, vec!["rho is 2.0"], "a fresh call starts empty");
+    assert_eq!(
+        out.output.plots,
+        vec![("rho".to_owned(), 1.5), ("k".to_owned(), 2.0)]
+    );
+    let out = s
+        .call(vec![number(2.0), number(0.0), number(0.0)], 0.1)
+        .unwrap();
+    assert_eq!(
+        out.output.prints,
+        vec!["rho is 2.0"],
+        "a fresh call starts empty"
+    );
 }

@@ -44,6 +44,14 @@ enum ControllerFile {
         #[serde(default)]
         limits: Option<LimitsFile>,
     },
+    /// A learner's law: `control(rho, alpha, beta)` → `[v, omega]`, run at
+    /// the control rate (100 Hz when the run gives none). A command line
+    /// may give `path` (a file beside the run file) instead of `source`.
+    Script {
+        source: String,
+        #[serde(default)]
+        direction: Direction,
+    },
 }
 
 #[derive(Debug, Deserialize)]
@@ -218,6 +226,19 @@ fn from_file(file: &RunFile) -> Result<RunSpec, FieldError> {
             if let Some(goal) = &file.goal {
                 run.goal = goal.into();
             }
+            run
+        }
+        ControllerFile::Script { source, direction } => {
+            let law = crate::law::Law::new(source, *direction)
+                .map_err(|e| FieldError::new("controller.source", e.to_string()))?;
+            let Some(goal) = &file.goal else {
+                return Err(FieldError::new(
+                    "goal",
+                    "missing field (a control law drives to a goal)",
+                ));
+            };
+            let mut run = Run::polar(start, goal.into(), crate::polar::TEXTBOOK_GAINS)?;
+            run.driver = Driver::Script(law);
             run
         }
     };

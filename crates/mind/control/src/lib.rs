@@ -19,6 +19,7 @@ pub mod batch;
 mod error;
 pub mod exercise;
 pub mod file;
+pub mod law;
 mod noise;
 mod plan;
 mod polar;

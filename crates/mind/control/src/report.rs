@@ -99,6 +99,12 @@ pub struct SimulationReport {
     pub stability: Option<StabilityReport>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plan: Option<PlanReport>,
+    /// A learner's law: how often it was called, and the error that
+    /// stopped the run (`kind`, `message`, `line`, `column`, `t`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub law_calls: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<kinolab_script::ScriptError>,
 }
 
 /// One sample of a run, with the goal as the robot sees it and what each
@@ -179,6 +185,7 @@ pub fn simulation(spec: &RunSpec, t: &Trajectory) -> SimulationReport {
         .collect();
     let (stability, plan) = match &run.driver {
         Driver::Polar { gains, .. } => (Some(stability(gains)), None),
+        Driver::Script(_) => (None, None),
         Driver::OpenLoop(plan) => (
             None,
             Some(PlanReport {
@@ -217,6 +224,8 @@ pub fn simulation(spec: &RunSpec, t: &Trajectory) -> SimulationReport {
         reason: t.diverged.as_ref().map(|d| d.reason.clone()),
         stability,
         plan,
+        law_calls: matches!(run.driver, Driver::Script(_)).then_some(t.calls.len()),
+        error: t.error.clone(),
     }
 }
 

@@ -22,6 +22,7 @@ use crate::plan::Plan;
 use crate::polar::{Direction, Gains, Polar};
 use kinolab_common::angle::{wrap, wrap_near};
 
+use crate::law::{self, Law, LawCall};
 use crate::pose::Pose;
 
 /// What decides (v, ω).
@@ -31,6 +32,8 @@ pub enum Driver {
     Polar { gains: Gains, direction: Direction },
     /// A timetable of commands, open loop.
     OpenLoop(Plan),
+    /// A learner's law, run at the control rate.
+    Script(Law),
 }
 
 /// When the goal counts as reached.
@@ -200,6 +203,11 @@ pub struct Trajectory {
     pub backward: bool,
     /// Set when the run was stopped because its state ran away.
     pub diverged: Option<Divergence>,
+    /// A learner's law: every call, and the error that stopped the run.
+    #[serde(skip)]
+    pub calls: Vec<LawCall>,
+    #[serde(skip)]
+    pub error: Option<kinolab_script::ScriptError>,
 }
 
 /// A run stopped early because it ran away: unstable gains, or a time step
@@ -221,7 +229,9 @@ pub const RUNAWAY_DISTANCE: f64 = 100.0;
 /// may go before it counts as run away; `None` for an open-loop run.
 fn runaway_bound(driver: &Driver, start_distance: f64) -> Option<f64> {
     match driver {
-        Driver::Polar { .. } => Some(RUNAWAY_DISTANCE.max(10.0 * start_distance)),
+        Driver::Polar { .. } | Driver::Script(_) => {
+            Some(RUNAWAY_DISTANCE.max(10.0 * start_distance))
+        }
         Driver::OpenLoop(_) => None,
     }
 }
@@ -341,13 +351,15 @@ impl Run {
     pub fn simulate(&self) -> Result<Trajectory, FieldError> {
         let steps = self.check()?;
         let start = self.start.relative_to(&self.goal);
-        let backward = match &self.driver {
-            Driver::Polar { direction, .. } => match direction {
-                Direction::Auto => !Polar::forward(&start).goal_in_front(),
-                Direction::Forward => false,
-                Direction::Backward => true,
-            },
-            Driver::OpenLoop(_) => false,
+        let direction = match &self.driver {
+            Driver::Polar { direction, .. } => Some(*direction),
+            Driver::Script(law) => Some(law.direction),
+            Driver::OpenLoop(_) => None,
+        };
+        let backward = match direction {
+            Some(Direction::Auto) => !Polar::forward(&start).goal_in_front(),
+            Some(Direction::Backward) => true,
+            Some(Direction::Forward) | None => false,
         };
         let mut system = System {
             run: self,
@@ -356,10 +368,16 @@ impl Run {
             slip: [0.0; 2],
             push: [0.0; 3],
             disturbed: self.noise.is_some(),
+            law: match &self.driver {
+                Driver::Script(law) => Some(law.script.clone()),
+                _ => None,
+            },
+            calls: Vec::new(),
+            error: None,
         };
         let (sg, cg) = trig::sin_cos(self.goal.theta);
         let control_every = self
-            .control_rate
+            .control_rate()
             .map(|rate| ((1.0 / rate) / self.dt).round().max(1.0) as usize);
 
         let mut s = [start.x, start.y, wrap(start.theta)];
@@ -394,7 +412,10 @@ impl Run {
             {
                 // A controller tick: compute afresh, then hold.
                 system.held = None;
-                system.held = Some(system.command(&s, t));
+                system.held = Some(system.tick(&s, t));
+                if system.error.is_some() {
+                    break;
+                }
             }
             let (v, omega) = system.command(&s, t);
             let wheel_speed = self.drive.peak(v, omega);
@@ -435,7 +456,17 @@ impl Run {
             peak_wheel_speed,
             backward,
             diverged,
+            calls: system.calls,
+            error: system.error,
         })
+    }
+
+    /// The rate the controller runs at: the run's, or a script's default.
+    fn control_rate(&self) -> Option<f64> {
+        match (&self.driver, self.control_rate) {
+            (Driver::Script(_), None) => Some(law::DEFAULT_RATE.min(1.0 / self.dt)),
+            (_, rate) => rate,
+        }
     }
 
     fn within_tolerance(&self, s: &[f64; 3]) -> bool {
@@ -460,12 +491,44 @@ struct System<'a> {
     push: [f64; 3],
     /// Whether the run has noise (slip and push), or both stay zero.
     disturbed: bool,
+    /// A learner's law (with its notes), its calls, and what stopped it.
+    law: Option<kinolab_script::Script>,
+    calls: Vec<LawCall>,
+    error: Option<kinolab_script::ScriptError>,
 }
 
 impl System<'_> {
     #[inline(always)]
     fn polar(&self, s: &[f64; 3]) -> Polar {
         Polar::near(s[0], s[1], s[2], self.backward)
+    }
+
+    /// A controller tick: the command in state `s` at `t`, calling a
+    /// learner's law (and keeping the call) when there is one.
+    fn tick(&mut self, s: &[f64; 3], t: f64) -> (f64, f64) {
+        let Some(script) = self.law.as_mut() else {
+            return self.command(s, t);
+        };
+        match law::command(script, &Polar::near(s[0], s[1], s[2], self.backward), t) {
+            Ok(call) => {
+                let command = self.saturated(call.v, call.omega);
+                self.calls.push(call);
+                command
+            }
+            Err(e) => {
+                self.error = Some(e);
+                (0.0, 0.0)
+            }
+        }
+    }
+
+    /// (v, ω) within the wheels' limit, when the run sets one.
+    #[inline(always)]
+    fn saturated(&self, v: f64, omega: f64) -> (f64, f64) {
+        match self.run.max_wheel_speed {
+            Some(max) => self.run.drive.saturate(v, omega, max),
+            None => (v, omega),
+        }
     }
 
     /// The commanded (v, ω) in state `s` at time `t`, after saturation.
@@ -477,11 +540,10 @@ impl System<'_> {
         let (v, omega) = match &self.run.driver {
             Driver::Polar { gains, .. } => gains.command(&self.polar(s)),
             Driver::OpenLoop(plan) => plan.command(t),
+            // Only ever held: the law runs at its ticks.
+            Driver::Script(_) => (0.0, 0.0),
         };
-        match self.run.max_wheel_speed {
-            Some(max) => self.run.drive.saturate(v, omega, max),
-            None => (v, omega),
-        }
+        self.saturated(v, omega)
     }
 
     /// d/dt of the unicycle's state z = (x, y, θ, cos θ, sin θ), with slip
