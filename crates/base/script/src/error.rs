@@ -129,7 +129,11 @@ impl ScriptError {
     /// An error while the function ran at `t`.
     pub(crate) fn run(e: &EvalAltResult, t: f64, signature: Signature) -> Self {
         let inner = e.unwrap_inner();
-        let position = inner.position();
+        // An operation count stops wherever it is; then the function's call.
+        let position = match inner.position() {
+            p if p.is_none() => e.position(),
+            p => p,
+        };
         let when = when(Some(t));
         let (kind, message) = match inner {
             EvalAltResult::ErrorTooManyOperations(_) => (

@@ -65,6 +65,7 @@ pub(crate) fn engine(sink: &Sink) -> Engine {
         .set_max_map_size(LIMITS.map)
         .set_max_variables(1_000)
         .set_max_functions(200);
+    same_maths(&mut e);
     let prints = sink.clone();
     e.on_print(move |text| {
         let mut out = prints.borrow_mut();
@@ -89,4 +90,24 @@ pub(crate) fn engine(sink: &Sink) -> Engine {
         }
     });
     e
+}
+
+/// Trigonometry and the other transcendental functions from the lab's
+/// own maths library (the core's `trig`, `libm`): a script computes the
+/// same bits as the core, natively and in wasm, so a run replays the same
+/// everywhere. `atan2(y, x)` is added beside Rhai's `atan(y, x)`.
+fn same_maths(e: &mut Engine) {
+    use kinolab_common::trig;
+    e.register_fn("sin", trig::sin)
+        .register_fn("cos", trig::cos)
+        .register_fn("tan", trig::tan)
+        .register_fn("atan", |y: f64, x: f64| trig::atan2(y, x))
+        .register_fn("atan2", |y: f64, x: f64| trig::atan2(y, x))
+        .register_fn("atan", libm::atan)
+        .register_fn("asin", libm::asin)
+        .register_fn("acos", libm::acos)
+        .register_fn("exp", libm::exp)
+        .register_fn("ln", libm::log)
+        .register_fn("log10", libm::log10)
+        .register_fn("hypot", libm::hypot);
 }

@@ -30,6 +30,11 @@ pub fn float(value: &Dynamic) -> Option<f64> {
         .or_else(|| value.as_int().ok().map(|n| n as f64))
 }
 
+/// `value` as text, if it is a string.
+pub fn text(value: &Dynamic) -> Option<String> {
+    value.is_string().then(|| value.to_string())
+}
+
 /// `value` as `N` finite numbers (`names` says what each one is), or why
 /// not: the wrong shape, or a number that is not finite.
 pub fn finite<const N: usize>(

@@ -138,3 +138,36 @@ fn print_and_plot_are_kept_per_call() {
         "a fresh call starts empty"
     );
 }
+
+#[test]
+fn trigonometry_is_the_cores_bit_for_bit() {
+    let f = Signature {
+        name: "f",
+        params: &["x"],
+    };
+    let mut s = Script::compile(
+        "fn f(x) { [sin(x), cos(x), atan2(x, 0.3), atan(x, 0.3), exp(x), hypot(x, 2.0)] }",
+        f,
+    )
+    .unwrap();
+    for x in [0.1, 1.2345, -2.5, 100.0] {
+        let out = s.call(vec![number(x)], 0.0).unwrap();
+        let got = finite(
+            &out.value,
+            ["sin", "cos", "atan2", "atan", "exp", "hypot"],
+            f,
+            0.0,
+        )
+        .unwrap();
+        let t = kinolab_common::trig::atan2(x, 0.3);
+        let want = [
+            kinolab_common::trig::sin(x),
+            kinolab_common::trig::cos(x),
+            t,
+            t,
+            libm::exp(x),
+            libm::hypot(x, 2.0),
+        ];
+        assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "x = {x}");
+    }
+}

@@ -21,6 +21,7 @@ pub mod frog;
 pub mod library;
 mod response;
 pub mod run;
+pub mod script;
 
 pub use kinolab_common::FieldError;
 pub use kinolab_world::Vec2;

@@ -10,6 +10,7 @@ use kinolab_world::sensors::Percepts;
 use serde::{Deserialize, Serialize};
 
 use crate::braitenberg::Wiring;
+use crate::script::ScriptCall;
 use crate::{FieldError, Response, Vec2};
 
 /// Which side a wall is followed on.
@@ -77,6 +78,8 @@ pub enum Behaviour {
     Dock { within: f64, speed: f64 },
     /// Light sensors wired to the wheels.
     Braitenberg(Wiring),
+    /// A learner's behaviour: `behave(p)` (see [`crate::script`]).
+    Script { source: String },
 }
 
 fn default_slow() -> f64 {
@@ -102,6 +105,14 @@ pub struct Named {
     /// Wander's interval and heading (odometry frame, rad).
     #[serde(skip)]
     wander: Option<(u64, f64)>,
+    /// A script behaviour compiled (with its notes), what its last call
+    /// returned and printed, and the error that stopped it.
+    #[serde(skip)]
+    script: Option<kinolab_script::Script>,
+    #[serde(skip)]
+    pub call: Option<ScriptCall>,
+    #[serde(skip)]
+    pub failed: Option<kinolab_script::ScriptError>,
 }
 
 /// Closer than this to the goal, going to it is done, m.
@@ -113,6 +124,9 @@ impl Named {
             name: name.into(),
             behaviour,
             wander: None,
+            script: None,
+            call: None,
+            failed: None,
         }
     }
 
@@ -158,13 +172,47 @@ impl Named {
                 positive("speed", *speed)?;
             }
             Behaviour::Braitenberg(w) => w.check()?,
+            Behaviour::Script { source } => {
+                kinolab_script::Script::compile(source, crate::script::BEHAVE)
+                    .map_err(|e| FieldError::new("source", e.to_string()))?;
+            }
         }
         Ok(())
     }
 
-    /// Forget any state (a run starting again).
+    /// Forget any state (a run starting again): a script starts afresh,
+    /// its notes empty.
     pub fn reset(&mut self) {
         self.wander = None;
+        self.call = None;
+        self.failed = None;
+        self.script = match &self.behaviour {
+            Behaviour::Script { source } => {
+                match kinolab_script::Script::compile(source, crate::script::BEHAVE) {
+                    Ok(s) => Some(s),
+                    Err(e) => {
+                        self.failed = Some(e);
+                        None
+                    }
+                }
+            }
+            _ => None,
+        };
+    }
+
+    /// A script behaviour's answer, keeping the call (or the error).
+    fn scripted(&mut self, p: &Percepts) -> Option<Response> {
+        let script = self.script.as_mut()?;
+        match crate::script::behave(script, &self.name, p) {
+            Ok((response, call)) => {
+                self.call = Some(call);
+                response
+            }
+            Err(e) => {
+                self.failed = Some(e);
+                None
+            }
+        }
     }
 
     /// Wander's heading now: a random walk that turns by up to `turn`
@@ -229,6 +277,7 @@ impl Named {
                 })
             }
             Behaviour::Braitenberg(w) => Some(Response::Wheels(w.wheels(p.light))),
+            Behaviour::Script { .. } => self.scripted(p),
         }
     }
 }

@@ -210,6 +210,9 @@ pub struct Frame {
     /// The pose after the step.
     pub pose: kinolab_world::Pose,
     pub clearance: f64,
+    /// What each learner's script (behaviour or coordinator) returned and
+    /// printed this step.
+    pub calls: Vec<crate::script::ScriptCall>,
 }
 
 /// A run in progress.
@@ -222,6 +225,8 @@ pub struct Runner {
     memory: Memory,
     pub duration: f64,
     pub stop_at_goal: bool,
+    /// The error that stopped a learner's script, and with it the run.
+    pub error: Option<kinolab_script::ScriptError>,
 }
 
 impl Runner {
@@ -247,13 +252,36 @@ impl Runner {
             },
             duration: setup.duration,
             stop_at_goal: setup.stop_at_goal,
+            error: None,
         })
     }
 
-    /// Whether the run is over: out of time, or at the goal when it should
-    /// stop there.
+    /// Whether the run is over: out of time, at the goal when it should
+    /// stop there, or stopped by a learner's script.
     pub fn done(&self) -> bool {
-        self.sim.time >= self.duration - 1e-9 || (self.stop_at_goal && self.sim.goal_reached)
+        self.sim.time >= self.duration - 1e-9
+            || (self.stop_at_goal && self.sim.goal_reached)
+            || self.error.is_some()
+    }
+
+    /// What the learner's scripts did this step; the first error stops the run.
+    fn script_calls(&mut self) -> Vec<crate::script::ScriptCall> {
+        let coordinator = self.memory.script();
+        let failed = self
+            .behaviours
+            .iter()
+            .find_map(|b| b.failed.clone())
+            .or_else(|| coordinator.and_then(|c| c.failed.clone()));
+        let calls = self
+            .behaviours
+            .iter()
+            .filter_map(|b| b.call.clone())
+            .chain(coordinator.and_then(|c| c.call.clone()))
+            .collect();
+        if self.error.is_none() {
+            self.error = failed;
+        }
+        calls
     }
 
     /// Sense, let every behaviour respond, coordinate, and move.
@@ -275,7 +303,12 @@ impl Runner {
             &self.drive,
             self.sim.dt,
         );
-        let step = self.sim.advance(decision.command);
+        let calls = self.script_calls();
+        let command = match self.error {
+            Some(_) => kinolab_world::Command::unicycle(0.0, 0.0),
+            None => decision.command,
+        };
+        let step = self.sim.advance(command);
         Frame {
             percepts,
             responses,
@@ -284,6 +317,7 @@ impl Runner {
             events: step.events,
             pose: self.sim.pose,
             clearance: step.clearance,
+            calls,
         }
     }
 
@@ -330,6 +364,10 @@ pub struct RunReport {
     pub control: Vec<Stretch>,
     pub events: Vec<Event>,
     pub metrics: Metrics,
+    /// The error that stopped a learner's script (`kind`, `message`,
+    /// `line`, `column`, `t`), when one did.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<kinolab_script::ScriptError>,
 }
 
 /// Run `setup` to the end.
@@ -395,5 +433,6 @@ pub fn run(setup: &Setup) -> Result<RunReport, FieldError> {
         control,
         events,
         metrics,
+        error: runner.error,
     })
 }

@@ -2,6 +2,7 @@
 //! command. Every behaviour runs every step (a lower layer keeps running
 //! while it is overruled); the coordinator decides what reaches the wheels.
 
+pub mod scripted;
 pub mod sequencer;
 pub mod subsumption;
 pub mod voting;
@@ -13,6 +14,7 @@ use kinolab_world::sensors::Percepts;
 use serde::{Deserialize, Serialize};
 
 use crate::{Drive, FieldError, Named, Response, Vec2};
+pub use scripted::ScriptState;
 pub use sequencer::{Sequencer, SequencerState};
 pub use subsumption::{Subsumption, SubsumptionState};
 pub use voting::Voting;
@@ -33,6 +35,8 @@ pub enum Coordinator {
     Voting(Voting),
     /// Sequential: a finite-state machine choosing the active set.
     Sequencer(Sequencer),
+    /// A learner's: `coordinate(outputs, p)` (see [`crate::script`]).
+    Script { source: String },
 }
 
 impl Coordinator {
@@ -42,6 +46,7 @@ impl Coordinator {
             Coordinator::Subsumption(_) => "subsumption",
             Coordinator::Voting(_) => "voting",
             Coordinator::Sequencer(_) => "sequencer",
+            Coordinator::Script { .. } => "your coordinator",
         }
     }
 
@@ -68,6 +73,11 @@ impl Coordinator {
             Coordinator::Subsumption(s) => s.check(&known),
             Coordinator::Voting(v) => v.check(&known),
             Coordinator::Sequencer(s) => s.check(&known),
+            Coordinator::Script { source } => {
+                kinolab_script::Script::compile(source, crate::script::COORDINATE)
+                    .map(|_| ())
+                    .map_err(|e| FieldError::new("source", e.to_string()))
+            }
         }
     }
 }
@@ -78,6 +88,7 @@ pub enum Memory {
     Stateless,
     Subsumption(SubsumptionState),
     Sequencer(SequencerState),
+    Script(Box<ScriptState>),
 }
 
 impl Memory {
@@ -85,7 +96,17 @@ impl Memory {
         match c {
             Coordinator::Subsumption(s) => Memory::Subsumption(SubsumptionState::new(s)),
             Coordinator::Sequencer(s) => Memory::Sequencer(SequencerState::new(s)),
+            Coordinator::Script { source } => Memory::Script(Box::new(ScriptState::new(source))),
             _ => Memory::Stateless,
+        }
+    }
+
+    /// A learner's coordinator that stopped on an error, and what its
+    /// last call returned and printed.
+    pub fn script(&self) -> Option<&ScriptState> {
+        match self {
+            Memory::Script(state) => Some(state),
+            _ => None,
         }
     }
 }
@@ -106,6 +127,9 @@ pub enum Trace {
     },
     /// The current state's name.
     Sequencer { state: String },
+    /// What a learner's coordinator chose: a behaviour by name, or its own
+    /// command (`None`).
+    Script { chose: Option<String> },
 }
 
 /// One step's decision.
@@ -156,6 +180,7 @@ pub fn decide(
         (Coordinator::Sequencer(s), Memory::Sequencer(st)) => {
             s.decide(st, responses, percepts, drive, dt)
         }
+        (Coordinator::Script { .. }, Memory::Script(st)) => st.decide(responses, percepts, drive),
         // A memory that does not match its coordinator: start it afresh.
         (c, _) => {
             *memory = Memory::new(c);

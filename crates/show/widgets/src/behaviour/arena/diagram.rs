@@ -52,6 +52,14 @@ impl Arena {
             Coordinator::Subsumption(s) => subsumption(ui, s, &names, record),
             Coordinator::Voting(_) => votes(ui, record),
             Coordinator::Sequencer(s) => states(ui, s, record),
+            Coordinator::Script { .. } => {
+                let chose = match record.map(|r| &r.trace) {
+                    Some(Trace::Script { chose: Some(name) }) => format!("chose `{name}`"),
+                    Some(Trace::Script { chose: None }) => "drove itself".to_owned(),
+                    _ => "has not run yet".to_owned(),
+                };
+                ui.label(format!("Your coordinator {chose}."));
+            }
         }
     }
 }
