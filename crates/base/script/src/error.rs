@@ -61,9 +61,35 @@ fn at(position: Position) -> (Option<usize>, Option<usize>) {
     (position.line(), position.position())
 }
 
-/// " at t = 3.20 s", or nothing before the run.
-fn when(t: Option<f64>) -> String {
-    t.map_or(String::new(), |t| format!(" at t = {} s", fixed(t, 2)))
+/// When (or where) a function was called: at a simulated time, or at a
+/// point of the plane (a potential field is asked at points, not times).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum When {
+    Time(f64),
+    Point(f64, f64),
+}
+
+impl From<f64> for When {
+    fn from(t: f64) -> Self {
+        When::Time(t)
+    }
+}
+
+impl When {
+    /// " at t = 3.20 s", " at (1.20, 0.50)".
+    fn words(self) -> String {
+        match self {
+            When::Time(t) => format!(" at t = {} s", fixed(t, 2)),
+            When::Point(x, y) => format!(" at ({}, {})", fixed(x, 2), fixed(y, 2)),
+        }
+    }
+
+    fn time(self) -> Option<f64> {
+        match self {
+            When::Time(t) => Some(t),
+            When::Point(..) => None,
+        }
+    }
 }
 
 impl ScriptError {
@@ -107,34 +133,36 @@ impl ScriptError {
     }
 
     /// The function returned `got` where `wanted` (a description) belongs.
-    pub fn shape(signature: Signature, wanted: &str, got: &str, t: f64) -> Self {
+    pub fn shape(signature: Signature, wanted: &str, got: &str, at: impl Into<When>) -> Self {
+        let at = at.into();
         let message = format!(
-            "`{}` must return {wanted}; at t = {} s it returned `{got}`",
+            "`{}` must return {wanted};{} it returned `{got}`",
             signature.name,
-            fixed(t, 2)
+            at.words()
         );
-        Self::new(ErrorKind::Shape, message, Position::NONE, Some(t))
+        Self::new(ErrorKind::Shape, message, Position::NONE, at.time())
     }
 
     /// The function returned a number that is not finite, for `what`.
-    pub fn not_finite(signature: Signature, what: &str, value: f64, t: f64) -> Self {
+    pub fn not_finite(signature: Signature, what: &str, value: f64, at: impl Into<When>) -> Self {
+        let at = at.into();
         let message = format!(
-            "`{}` returned {value} for {what} at t = {} s: a division by zero, or the square root of a negative number?",
+            "`{}` returned {value} for {what}{}: a division by zero, or the square root of a negative number?",
             signature.name,
-            fixed(t, 2)
+            at.words()
         );
-        Self::new(ErrorKind::NotFinite, message, Position::NONE, Some(t))
+        Self::new(ErrorKind::NotFinite, message, Position::NONE, at.time())
     }
 
-    /// An error while the function ran at `t`.
-    pub(crate) fn run(e: &EvalAltResult, t: f64, signature: Signature) -> Self {
+    /// An error while the function ran.
+    pub(crate) fn run(e: &EvalAltResult, at: When, signature: Signature) -> Self {
         let inner = e.unwrap_inner();
         // An operation count stops wherever it is; then the function's call.
         let position = match inner.position() {
             p if p.is_none() => e.position(),
             p => p,
         };
-        let when = when(Some(t));
+        let when = at.words();
         let (kind, message) = match inner {
             EvalAltResult::ErrorTooManyOperations(_) => (
                 ErrorKind::Endless,
@@ -164,7 +192,7 @@ impl ScriptError {
                 format!("in `{}`{when}: {}", signature.name, plain(other)),
             ),
         };
-        Self::new(kind, message, position, Some(t))
+        Self::new(kind, message, position, at.time())
     }
 }
 

@@ -21,7 +21,7 @@ mod sandbox;
 mod script;
 pub mod value;
 
-pub use error::{ErrorKind, ScriptError};
+pub use error::{ErrorKind, ScriptError, When};
 pub use rhai::{Array, Dynamic, Map};
 pub use sandbox::{LIMITS, Limits, Output};
 pub use script::{Call, Script, Signature};

@@ -4,7 +4,7 @@ use std::rc::Rc;
 
 use rhai::{AST, CallFnOptions, Dynamic, Engine, Map, Scope};
 
-use crate::error::ScriptError;
+use crate::error::{ScriptError, When};
 use crate::sandbox::{Output, Sink, engine};
 
 /// The function a hook calls, as the learner must write it.
@@ -95,12 +95,28 @@ impl Script {
         &self.memory
     }
 
-    /// Call the function with `args` at simulated time `t`.
-    pub fn call(&mut self, args: Vec<Dynamic>, t: f64) -> Result<Call, ScriptError> {
+    /// Call the function with `args` at simulated time `t` (or a point).
+    pub fn call(&mut self, args: Vec<Dynamic>, t: impl Into<When>) -> Result<Call, ScriptError> {
+        let mut memory = std::mem::take(&mut self.memory);
+        let call = self.call_with(&mut memory, args, t.into());
+        self.memory = memory;
+        call
+    }
+
+    /// Call the function as a pure one: `this` starts empty and nothing is
+    /// kept (a field's value at a point must not depend on earlier points).
+    pub fn call_pure(&self, args: Vec<Dynamic>, at: impl Into<When>) -> Result<Call, ScriptError> {
+        self.call_with(&mut Dynamic::from_map(Map::new()), args, at.into())
+    }
+
+    fn call_with(
+        &self,
+        memory: &mut Dynamic,
+        args: Vec<Dynamic>,
+        at: When,
+    ) -> Result<Call, ScriptError> {
         *self.sink.borrow_mut() = Output::default();
-        let options = CallFnOptions::new()
-            .eval_ast(false)
-            .bind_this_ptr(&mut self.memory);
+        let options = CallFnOptions::new().eval_ast(false).bind_this_ptr(memory);
         let value = self
             .engine
             .call_fn_with_options::<Dynamic>(
@@ -110,7 +126,7 @@ impl Script {
                 self.signature.name,
                 args,
             )
-            .map_err(|e| ScriptError::run(&e, t, self.signature));
+            .map_err(|e| ScriptError::run(&e, at, self.signature));
         let output = std::mem::take(&mut *self.sink.borrow_mut());
         value.map(|value| Call { value, output })
     }

@@ -3,7 +3,7 @@
 
 use rhai::{Dynamic, Map};
 
-use crate::error::ScriptError;
+use crate::error::{ScriptError, When};
 use crate::script::Signature;
 
 /// A number as a script sees it.
@@ -41,10 +41,11 @@ pub fn finite<const N: usize>(
     value: &Dynamic,
     names: [&str; N],
     signature: Signature,
-    t: f64,
+    at: impl Into<When>,
 ) -> Result<[f64; N], ScriptError> {
+    let at = at.into();
     let wanted = format!("[{}], {} numbers", names.join(", "), N);
-    let shape = || ScriptError::shape(signature, &wanted, &describe(value), t);
+    let shape = || ScriptError::shape(signature, &wanted, &describe(value), at);
     let items = value.as_array_ref().map_err(|_| shape())?;
     if items.len() != N {
         return Err(shape());
@@ -53,7 +54,7 @@ pub fn finite<const N: usize>(
     for (k, item) in items.iter().enumerate() {
         let x = float(item).ok_or_else(shape)?;
         if !x.is_finite() {
-            return Err(ScriptError::not_finite(signature, names[k], x, t));
+            return Err(ScriptError::not_finite(signature, names[k], x, at));
         }
         out[k] = x;
     }

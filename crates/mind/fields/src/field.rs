@@ -2,6 +2,7 @@
 
 use kinolab_world::Shape;
 
+use crate::custom::Custom;
 use crate::primitive::{Primitive, Sense, Source};
 use crate::{Mat2, Vec2};
 
@@ -15,6 +16,8 @@ pub struct Field {
     /// Where the robot should end up, if anywhere.
     pub goal: Option<Vec2>,
     pub primitives: Vec<Primitive>,
+    /// Learners' primitives, summed with the others.
+    pub custom: Vec<Custom>,
 }
 
 impl Field {
@@ -23,12 +26,17 @@ impl Field {
             name: name.into(),
             goal,
             primitives,
+            custom: Vec::new(),
         }
     }
 
     /// The vector the robot feels at `p`.
     pub fn vector(&self, p: Vec2) -> Vec2 {
-        self.primitives.iter().map(|q| q.vector(p)).sum()
+        let built_in: Vec2 = self.primitives.iter().map(|q| q.vector(p)).sum();
+        if self.custom.is_empty() {
+            return built_in;
+        }
+        built_in + self.custom.iter().map(|c| c.vector(p)).sum::<Vec2>()
     }
 
     /// The vector at `p` and its Jacobian.
@@ -36,9 +44,16 @@ impl Field {
         self.primitives
             .iter()
             .map(|q| q.linearise(p))
+            .chain(self.custom.iter().map(|c| c.linearise(p)))
             .fold((Vec2::zeros(), Mat2::zeros()), |(f, j), (df, dj)| {
                 (f + df, j + dj)
             })
+    }
+
+    /// The error that stopped a learner's primitive, if one did (the
+    /// field reads it as zero from then on).
+    pub fn failed(&self) -> Option<kinolab_script::ScriptError> {
+        self.custom.iter().find_map(Custom::failed)
     }
 
     /// Whether every primitive is differentiable at `p`.

@@ -34,6 +34,8 @@ enum Kind {
     Repulsive,
     Tangential,
     Perpendicular,
+    /// A learner's: `field(x, y)` → `[fx, fy]`, in `source`.
+    Script,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -73,6 +75,13 @@ struct Entry {
     spin: Option<Spin>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     sense: Option<Sense>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    source: Option<String>,
+}
+
+/// A script entry read as a built-in primitive.
+fn not_built_in() -> FieldError {
+    FieldError::new("kind", "a script is not a built-in primitive")
 }
 
 impl Entry {
@@ -90,11 +99,30 @@ impl Entry {
         ]
     }
 
+    /// A learner's primitive: only `source` may be set.
+    fn custom(&self) -> Result<crate::custom::Custom, FieldError> {
+        if let Some((field, _)) = self.set().iter().find(|(_, on)| *on) {
+            return Err(FieldError::new(
+                *field,
+                "a script field takes only `source`",
+            ));
+        }
+        let source = self
+            .source
+            .as_deref()
+            .ok_or_else(|| FieldError::new("source", "missing: a script field needs its code"))?;
+        crate::custom::Custom::new(source).map_err(|e| FieldError::new("source", e.to_string()))
+    }
+
     fn primitive(&self) -> Result<Primitive, FieldError> {
+        if self.source.is_some() {
+            return Err(FieldError::new("source", "only a `script` field has code"));
+        }
         let kind = self
             .kind
             .ok_or_else(|| FieldError::new("kind", "missing: every field needs a kind"))?;
         let allowed: &[&str] = match kind {
+            Kind::Script => return Err(not_built_in()),
             Kind::Uniform => &["direction_deg"],
             Kind::Attractive => &["x", "y"],
             Kind::Repulsive => &["x", "y", "radius"],
@@ -128,6 +156,7 @@ impl Entry {
             Ok(Vec2::new(x, y))
         };
         let source = match kind {
+            Kind::Script => return Err(not_built_in()),
             Kind::Uniform => Source::Uniform {
                 direction: need(self.direction_deg, "direction_deg")?.to_radians(),
             },
@@ -220,15 +249,16 @@ impl Field {
     /// Read a field file. Errors name the JSON path of the bad field.
     pub fn from_json(text: &str) -> Result<Self, FieldError> {
         let file: FieldFile = from_json(text)?;
-        let primitives = file
-            .fields
-            .iter()
-            .enumerate()
-            .map(|(i, e)| {
-                e.primitive()
-                    .map_err(|err| err.within(&format!("fields[{i}]")))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        let mut primitives = Vec::new();
+        let mut custom = Vec::new();
+        for (i, e) in file.fields.iter().enumerate() {
+            let within = |err: FieldError| err.within(&format!("fields[{i}]"));
+            if e.kind == Some(Kind::Script) {
+                custom.push(e.custom().map_err(within)?);
+            } else {
+                primitives.push(e.primitive().map_err(within)?);
+            }
+        }
         let goal = match file.goal {
             Some(g) => {
                 kinolab_common::error::finite("goal.x", g.x)?;
@@ -237,7 +267,10 @@ impl Field {
             }
             None => None,
         };
-        Ok(Field::new(file.name, goal, primitives))
+        Ok(Field {
+            custom,
+            ..Field::new(file.name, goal, primitives)
+        })
     }
 
     /// The field file for this field, pretty-printed.
@@ -245,7 +278,16 @@ impl Field {
         let file = FieldFile {
             name: self.name.clone(),
             goal: self.goal.map(|g| Point { x: g.x, y: g.y }),
-            fields: self.primitives.iter().map(Entry::from_primitive).collect(),
+            fields: self
+                .primitives
+                .iter()
+                .map(Entry::from_primitive)
+                .chain(self.custom.iter().map(|c| Entry {
+                    kind: Some(Kind::Script),
+                    source: Some(c.source.clone()),
+                    ..Entry::default()
+                }))
+                .collect(),
         };
         serde_json::to_string_pretty(&file).unwrap_or_default()
     }

@@ -16,6 +16,7 @@
 
 pub mod basin;
 pub mod catalogue;
+pub mod custom;
 pub mod descend;
 pub mod exercise;
 mod field;

@@ -16,10 +16,17 @@ use kinolab_world::obstacle::{Obstacle, Shape};
 use kinolab_world::sensors::Rays;
 use kinolab_world::{Pose, Rect, Sensors, World};
 
-/// Eight primitives, one or more of every kind.
+/// Eight primitives, one or more of every kind (built once per thread: a
+/// field may hold a learner's script, which stays on its thread).
 fn eight() -> &'static Field {
-    static FIELD: std::sync::OnceLock<Field> = std::sync::OnceLock::new();
-    FIELD.get_or_init(|| {
+    thread_local! {
+        static FIELD: &'static Field = Box::leak(Box::new(build_eight()));
+    }
+    FIELD.with(|f| *f)
+}
+
+fn build_eight() -> Field {
+    {
         let p = |s, g, pr, r| Primitive::new(s, g, pr, r).ok();
         let c = Vec2::new;
         let list = [
@@ -100,7 +107,7 @@ fn eight() -> &'static Field {
             Some(c(4.0, 0.0)),
             list.into_iter().flatten().collect(),
         )
-    })
+    }
 }
 
 pub fn field_vector() -> f64 {
