@@ -54,6 +54,9 @@ pub(crate) enum Command {
         /// Keep one sample in this many steps (of 50 ms).
         #[arg(long, default_value_t = 1)]
         every: usize,
+        /// A learner's sequencer for the hybrid robot: a script file defining `next(state)`.
+        #[arg(long)]
+        sequencer: Option<PathBuf>,
     },
     /// Each sensor's route and the paradigm of a wiring of sensors to functions.
     Routes {
@@ -105,6 +108,7 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             duration,
             seed,
             every,
+            sequencer,
         } => ask(
             &plans::Arena {
                 world: source(&world)?,
@@ -115,6 +119,7 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
                     duration,
                     seed,
                     every,
+                    sequencer: sequencer.as_deref().map(crate::input::read).transpose()?,
                 },
             },
             Some(&world),

@@ -22,6 +22,8 @@ pub struct ArenaSetup {
     pub duration: f64,
     pub dt: f64,
     pub seed: u64,
+    /// A learner's sequencer for the hybrid robot (`next(state)`).
+    pub sequencer: Option<String>,
 }
 
 impl ArenaSetup {
@@ -35,7 +37,19 @@ impl ArenaSetup {
             duration: 120.0,
             dt: 0.05,
             seed: 0,
+            sequencer: None,
         }
+    }
+
+    /// The learner's sequencer, compiled; a syntax error names its line.
+    pub fn sequencer_script(&self) -> Result<Option<kinolab_script::Script>, FieldError> {
+        self.sequencer
+            .as_deref()
+            .map(|source| {
+                kinolab_script::Script::compile(source, crate::paradigm::scripted::SIGNATURE)
+                    .map_err(|e| FieldError::new("sequencer", e.to_string()))
+            })
+            .transpose()
     }
 
     pub fn check(&self) -> Result<(), FieldError> {
@@ -50,7 +64,7 @@ impl ArenaSetup {
         for (i, s) in self.surprises.iter().enumerate() {
             s.check(&format!("perturb[{i}]"), &self.world)?;
         }
-        Ok(())
+        self.sequencer_script().map(|_| ())
     }
 }
 
@@ -102,7 +116,9 @@ pub struct Entrant {
 
 impl Entrant {
     pub fn finished(&self, duration: f64) -> bool {
-        self.sim.goal_reached || self.sim.time >= duration - 1e-9
+        self.sim.goal_reached
+            || self.sim.time >= duration - 1e-9
+            || self.controller.failed().is_some()
     }
 
     /// Sense, decide and move one step; the events of the step.
@@ -189,6 +205,7 @@ impl Arena {
         let settings = Settings {
             body: body.clone(),
             planning_cost: setup.planning_cost,
+            sequencer: setup.sequencer_script()?,
         };
         let entrants = kinds
             .iter()

@@ -26,6 +26,9 @@ pub struct ArenaReport {
     pub samples: Vec<Sample>,
     pub events: Vec<Event>,
     pub metrics: Scores,
+    /// The error that stopped a learner's sequencer, when one did.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<kinolab_script::ScriptError>,
 }
 
 /// Run one `architecture` through `setup` to the end, keeping one sample
@@ -64,6 +67,7 @@ pub fn run(
         samples,
         events,
         metrics: arena.entrants[0].scores.clone(),
+        error: arena.entrants[0].controller.failed().cloned(),
     })
 }
 
@@ -85,6 +89,10 @@ pub struct Request {
     /// Keep one sample in this many steps.
     #[serde(default = "kinolab_common::defaults::one")]
     pub every: usize,
+    /// A learner's sequencer for the hybrid robot: the script's code
+    /// (`next(state)`).
+    #[serde(default)]
+    pub sequencer: Option<String>,
 }
 
 impl Request {
@@ -104,6 +112,7 @@ impl Request {
                 / 1e3;
         setup.duration = self.duration;
         setup.seed = self.seed;
+        setup.sequencer.clone_from(&self.sequencer);
         run(&setup, kind, self.every)
     }
 }

@@ -11,7 +11,7 @@
 use kinolab_world::sensors::Percepts;
 use kinolab_world::{FieldError, Vec2};
 
-use super::{Act, Belief, Settings, aimed_at, goal_point, plan_age, plan_target};
+use super::{Act, Belief, Settings, aimed_at, goal_point, plan_age, plan_target, scripted};
 use crate::follow::Follower;
 use crate::map::Cartographer;
 use crate::planner::{Outcome, Plan, Planner};
@@ -91,6 +91,11 @@ pub struct Hybrid {
     pub sequencer: Sequencer,
     pub skills: Skills,
     radius: f64,
+    /// A learner's sequencer in place of the built-in one, the error that
+    /// stopped it, and whether the last search found no way.
+    script: Option<kinolab_script::Script>,
+    pub failed: Option<kinolab_script::ScriptError>,
+    no_path: bool,
 }
 
 impl Hybrid {
@@ -101,10 +106,16 @@ impl Hybrid {
             sequencer: Sequencer::default(),
             skills: Skills::avoid_and_go(&settings.body),
             radius: settings.body.radius(),
+            script: settings.sequencer.clone(),
+            failed: None,
+            no_path: false,
         })
     }
 
     pub fn act(&mut self, p: &Percepts, dt: f64) -> Act {
+        if self.script.is_some() {
+            return self.act_scripted(p, dt);
+        }
         let pose = p.odometry;
         let at = Vec2::new(pose.x, pose.y);
         // The cartographer listens all the time.
@@ -144,11 +155,84 @@ impl Hybrid {
         }
     }
 
+    /// A step with the learner's sequencer deciding.
+    fn act_scripted(&mut self, p: &Percepts, dt: f64) -> Act {
+        let pose = p.odometry;
+        let at = Vec2::new(pose.x, pose.y);
+        self.map.update(pose, p, self.radius);
+        let goal = goal_point(p);
+        let next = plan_target(&mut self.sequencer.follower, at);
+        let ahead = self
+            .sequencer
+            .follower
+            .as_ref()
+            .map_or(&[][..], |f| f.ahead());
+        let situation = scripted::Situation {
+            t: p.time,
+            at,
+            goal,
+            plan: ahead,
+            planned_for: self.sequencer.plan.as_ref().map(|plan| plan.goal),
+            planning: self.planner.pending.is_some(),
+            no_path: self.no_path,
+            blocked: next.is_some_and(|w| blocked(&self.map, at, w)),
+        };
+        let decision = match self
+            .script
+            .as_mut()
+            .map(|s| scripted::decide(s, &situation))
+        {
+            Some(Ok(d)) => d,
+            Some(Err(e)) => {
+                self.failed = Some(e);
+                self.script = None;
+                return stopped();
+            }
+            None => return stopped(),
+        };
+        if decision.replan
+            && self.planner.pending.is_none()
+            && let Some(goal) = goal
+        {
+            self.sequencer.reason = Some("your sequencer asked");
+            if self.planner.request(&self.map, at, goal, p.time).is_err() {
+                self.planner.pending = None;
+            }
+        }
+        match self.planner.tick(dt, p.time) {
+            Some(Outcome::Found(plan)) => {
+                self.no_path = false;
+                self.sequencer.adopt(plan);
+            }
+            Some(Outcome::NoPath { .. }) => self.no_path = true,
+            None => {}
+        }
+        let aimed = match decision.target.or(goal) {
+            Some(target) => aimed_at(p, target),
+            None => p.clone(),
+        };
+        let step = self.skills.act(&aimed, dt);
+        Act {
+            command: step.command,
+            activity: step.in_control.unwrap_or_else(|| "idle".into()),
+            model_age: plan_age(&self.sequencer.plan, p.time),
+        }
+    }
+
     pub fn belief(&self) -> Belief<'_> {
         Belief {
             map: Some(&self.map),
             plan: self.sequencer.follower.as_ref().map_or(&[], |f| f.ahead()),
             planning: self.planner.pending.as_ref(),
         }
+    }
+}
+
+/// What a robot does once its learner's sequencer has failed: stand still.
+fn stopped() -> Act {
+    Act {
+        command: kinolab_world::Command::STOP,
+        activity: "stopped: the sequencer failed".into(),
+        model_age: None,
     }
 }

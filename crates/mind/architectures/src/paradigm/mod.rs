@@ -5,6 +5,7 @@
 mod hierarchical;
 mod hybrid;
 mod reactive;
+pub mod scripted;
 
 pub use hierarchical::Hierarchical;
 pub use hybrid::{Hybrid, Sequencer};
@@ -61,12 +62,14 @@ impl Architecture {
     }
 }
 
-/// What the robots share: their body and the planning cost.
+/// What the robots share: their body and the planning cost; and a
+/// learner's sequencer for the hybrid robot, when there is one.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
     pub body: Body,
     /// Simulated planning time per expanded cell, s.
     pub planning_cost: f64,
+    pub sequencer: Option<kinolab_script::Script>,
 }
 
 /// One step of a controller.
@@ -139,6 +142,14 @@ impl Controller {
             Controller::Hierarchical(c) => Some(c.planner.work),
             Controller::Reactive(_) => None,
             Controller::Hybrid(c) => Some(c.planner.work),
+        }
+    }
+
+    /// The error that stopped a learner's sequencer, if one did.
+    pub fn failed(&self) -> Option<&kinolab_script::ScriptError> {
+        match self {
+            Controller::Hybrid(c) => c.failed.as_ref(),
+            _ => None,
         }
     }
 
