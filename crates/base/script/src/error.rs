@@ -67,6 +67,8 @@ fn at(position: Position) -> (Option<usize>, Option<usize>) {
 pub enum When {
     Time(f64),
     Point(f64, f64),
+    /// A phase of a cycle, 0 to 1.
+    Phase(f64),
 }
 
 impl From<f64> for When {
@@ -81,13 +83,14 @@ impl When {
         match self {
             When::Time(t) => format!(" at t = {} s", fixed(t, 2)),
             When::Point(x, y) => format!(" at ({}, {})", fixed(x, 2), fixed(y, 2)),
+            When::Phase(tau) => format!(" at phase {}", fixed(tau, 3)),
         }
     }
 
     fn time(self) -> Option<f64> {
         match self {
             When::Time(t) => Some(t),
-            When::Point(..) => None,
+            When::Point(..) | When::Phase(..) => None,
         }
     }
 }

@@ -26,6 +26,15 @@ pub const LEGS: [&str; 6] = [
 /// A foot this far (m) from its target counts as reached.
 pub const REACHED: f64 = 1e-6;
 
+/// The function a learner's leg sequencer defines: for a leg (`#{ name,
+/// index, x, y, z }`, its neutral foot point in the body frame, m) at a
+/// phase of the cycle (0 to 1), whether the foot is on the ground and where
+/// it should be: `#{ stance: true, at: [x, y, z] }`.
+pub const FOOT: kinolab_script::Signature = kinolab_script::Signature {
+    name: "foot",
+    params: &["leg", "phase"],
+};
+
 /// The catalogue hexapod walking one gait.
 #[derive(Debug, Clone)]
 pub struct Walker {
@@ -36,6 +45,8 @@ pub struct Walker {
     feet: Vec<FrameRef>,
     /// Each foot where it stands in the zero pose: the middle of its stride.
     neutral: Vec<Vector3<f64>>,
+    /// A learner's leg sequencer, in place of the gait's timing.
+    sequencer: Option<kinolab_script::Script>,
 }
 
 /// The walker at one instant.
@@ -50,6 +61,10 @@ pub struct Step {
     pub errors: Vec<f64>,
     /// Legs whose target was out of reach.
     pub unreachable: Vec<&'static str>,
+    /// Whether each foot is on the ground, and the static stability
+    /// margin of those that are (`None` with fewer than three down).
+    pub stance: Vec<bool>,
+    pub margin: Option<f64>,
 }
 
 impl Walker {
@@ -81,7 +96,38 @@ impl Walker {
             lift,
             feet,
             neutral,
+            sequencer: None,
         })
+    }
+
+    /// The same walker with a learner's leg sequencer (`foot(leg, phase)`)
+    /// deciding each foot instead of the gait; a syntax error names its line.
+    pub fn with_sequencer(mut self, source: &str) -> Result<Self, FieldError> {
+        let script = kinolab_script::Script::compile(source, FOOT)
+            .map_err(|e| FieldError::new("sequencer", e.to_string()))?;
+        self.sequencer = Some(script);
+        Ok(self)
+    }
+
+    /// Whether leg `i` stands at `tau`, and where its foot should be.
+    fn plan(&self, i: usize, tau: f64) -> Result<(bool, Vector3<f64>), FieldError> {
+        let Some(script) = &self.sequencer else {
+            let sigma = (tau - self.gait.legs[i].phase).rem_euclid(1.0);
+            return Ok((sigma >= 1.0 - self.gait.duty_factor, self.target(i, tau)));
+        };
+        let n = self.neutral[i];
+        let leg = kinolab_script::value::map([
+            ("name", self.gait.legs[i].name.clone().into()),
+            ("index", kinolab_script::Dynamic::from_int(i as i64)),
+            ("x", kinolab_script::value::number(n.x)),
+            ("y", kinolab_script::value::number(n.y)),
+            ("z", kinolab_script::value::number(n.z)),
+        ]);
+        let at = kinolab_script::When::Phase(tau);
+        let call = script
+            .call_pure(vec![leg, kinolab_script::value::number(tau)], at)
+            .map_err(|e| FieldError::new("sequencer", e.to_string()))?;
+        foot_answer(&call.value, at).map_err(|e| FieldError::new("sequencer", e.to_string()))
     }
 
     /// Where leg `i`'s foot should be at `tau`, body frame.
@@ -133,8 +179,10 @@ impl Walker {
         let mut targets = Vec::with_capacity(6);
         let mut errors = Vec::with_capacity(6);
         let mut unreachable = Vec::new();
+        let mut stance = Vec::with_capacity(6);
         for (i, foot) in self.feet.iter().enumerate() {
-            let target = self.target(i, tau);
+            let (down, target) = self.plan(i, tau)?;
+            stance.push(down);
             let solution =
                 self.model
                     .solve(&[Goal::new(*foot, Target::Position(target))], &q, &options)?;
@@ -145,14 +193,69 @@ impl Walker {
                 unreachable.push(LEGS[i]);
             }
         }
+        let ground: Vec<crate::Point> = targets
+            .iter()
+            .zip(&stance)
+            .filter(|(_, down)| **down)
+            .map(|(t, _)| [t[0], t[1]])
+            .collect();
+        let margin = crate::static_stability(self.gait.com, &ground)
+            .ok()
+            .map(|s| s.margin);
         Ok(Step {
             tau,
             q,
             targets,
             errors,
             unreachable,
+            stance,
+            margin,
         })
     }
+}
+
+/// A leg sequencer's answer: `#{ stance: bool, at: [x, y, z] }`.
+fn foot_answer(
+    value: &kinolab_script::Dynamic,
+    at: kinolab_script::When,
+) -> Result<(bool, Vector3<f64>), kinolab_script::ScriptError> {
+    let shape = || {
+        kinolab_script::ScriptError::shape(
+            FOOT,
+            "#{ stance: true or false, at: [x, y, z] }",
+            &kinolab_script::value::describe(value),
+            at,
+        )
+    };
+    let answer = value.read_lock::<kinolab_script::Map>().ok_or_else(shape)?;
+    let stance = answer
+        .get("stance")
+        .and_then(|s| s.as_bool().ok())
+        .ok_or_else(shape)?;
+    let point = answer.get("at").ok_or_else(shape)?;
+    let [x, y, z] = kinolab_script::value::finite(point, ["x", "y", "z"], FOOT, at)?;
+    Ok((stance, Vector3::new(x, y, z)))
+}
+
+/// How far the body moves forwards over `steps` (one cycle): between
+/// instants, the mean backward slide of the feet standing at both, m. A
+/// gait moves L/β a cycle; the sum misses the moments when one set of feet
+/// hands over to the next, so it comes closer the more instants there are.
+pub fn progress(steps: &[Step]) -> f64 {
+    steps
+        .windows(2)
+        .map(|w| {
+            let both: Vec<f64> = (0..w[0].targets.len())
+                .filter(|&i| w[0].stance[i] && w[1].stance[i])
+                .map(|i| w[0].targets[i][0] - w[1].targets[i][0])
+                .collect();
+            if both.is_empty() {
+                0.0
+            } else {
+                both.iter().sum::<f64>() / both.len() as f64
+            }
+        })
+        .sum()
 }
 
 #[cfg(test)]

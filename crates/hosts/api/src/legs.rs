@@ -105,15 +105,21 @@ pub struct Walk {
     pub samples: usize,
     /// The stride, m (the gait's own when `None`).
     pub stride: Option<f64>,
+    /// A learner's leg sequencer (`foot(leg, phase)`), in place of the
+    /// gait's timing.
+    pub sequencer: Option<String>,
 }
 
-/// The walker through one cycle.
+/// The walker through one cycle: each instant, the smallest stability
+/// margin, and how far the body moved forwards.
 #[derive(Debug, Clone, Serialize)]
 pub struct WalkReport {
     pub gait: String,
     pub stride: f64,
     pub lift: f64,
     pub steps: Vec<Step>,
+    pub min_margin: Option<f64>,
+    pub progress: f64,
 }
 
 impl Operation for Walk {
@@ -124,12 +130,30 @@ impl Operation for Walk {
             gait.stride = stride;
         }
         let as_argument = Error::argument_or_input(&["lift", "samples", "stride"], "gait");
-        let walker = Walker::new(gait.clone(), self.lift).map_err(&as_argument)?;
+        let mut walker = Walker::new(gait.clone(), self.lift).map_err(&as_argument)?;
+        if let Some(source) = &self.sequencer {
+            walker = walker
+                .with_sequencer(source)
+                .map_err(|e| Error::argument("sequencer", e.message))?;
+        }
+        let steps = walker
+            .cycle(self.samples)
+            .map_err(|e| match e.field.as_str() {
+                "sequencer" => Error::argument("sequencer", e.message),
+                _ => as_argument(e),
+            })?;
+        let min_margin = steps
+            .iter()
+            .map(|s| s.margin.unwrap_or(f64::NEG_INFINITY))
+            .reduce(f64::min)
+            .filter(|m| m.is_finite());
         Ok(WalkReport {
             gait: gait.name,
             stride: gait.stride,
             lift: self.lift,
-            steps: walker.cycle(self.samples).map_err(as_argument)?,
+            progress: kinolab_locomotion::walker::progress(&steps),
+            min_margin,
+            steps,
         })
     }
 }

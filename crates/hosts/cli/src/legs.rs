@@ -53,6 +53,9 @@ pub(crate) enum Command {
         /// The stride, m (the gait's own when left out).
         #[arg(long, allow_hyphen_values = true)]
         stride: Option<f64>,
+        /// A learner's leg sequencer: a script file defining `foot(leg, phase)`.
+        #[arg(long)]
+        sequencer: Option<PathBuf>,
     },
     /// Phase oscillators, one per leg, coupled towards a gait: where they end and whether they lock.
     Cpg {
@@ -84,12 +87,14 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             lift,
             samples,
             stride,
+            sequencer,
         } => ask(
             &legs::Walk {
                 gait: source(&gait)?,
                 lift,
                 samples,
                 stride,
+                sequencer: sequencer.as_deref().map(crate::input::read).transpose()?,
             },
             Some(&gait),
         ),

@@ -171,6 +171,7 @@ fn js(case: &Case) -> Option<Reply> {
             Some(a.number("lift").unwrap_or(0.03)),
             Some(a.number("samples").map_or(60, |s| s as usize)),
             a.number("stride"),
+            None,
         ),
         "plan" => calls::plan(
             first(),

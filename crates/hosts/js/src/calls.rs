@@ -59,12 +59,19 @@ pub fn zmp(run: Value) -> Reply {
     ask(&legs::Zmp { run: source(run) })
 }
 
-pub fn walk(gait: Value, lift: Option<f64>, samples: Option<usize>, stride: Option<f64>) -> Reply {
+pub fn walk(
+    gait: Value,
+    lift: Option<f64>,
+    samples: Option<usize>,
+    stride: Option<f64>,
+    sequencer: Option<String>,
+) -> Reply {
     ask(&legs::Walk {
         gait: source(gait),
         lift: lift.unwrap_or(0.03),
         samples: samples.unwrap_or(60),
         stride,
+        sequencer,
     })
 }
 

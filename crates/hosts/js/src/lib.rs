@@ -101,16 +101,25 @@ pub fn zmp(run: JsValue) -> Result<JsValue, JsError> {
 
 /// What `kinolab walk` prints: the hexapod walking a six-legged gait
 /// (file or `"catalogue:<id>"`) through one cycle, `{ gait, stride, lift,
-/// steps: [{ tau, q, targets, errors, unreachable }] }`; `lift` (m),
-/// `samples` and `stride` (m) may be left out (0.03, 60, the gait's).
+/// steps: [{ tau, q, targets, errors, unreachable, stance, margin }],
+/// min_margin, progress }`; `lift` (m), `samples` and `stride` (m) may be
+/// left out (0.03, 60, the gait's); `sequencer` is a learner's leg
+/// sequencer's code (`foot(leg, phase)`).
 #[wasm_bindgen]
 pub fn walk(
     gait: JsValue,
     lift: Option<f64>,
     samples: Option<usize>,
     stride: Option<f64>,
+    sequencer: Option<String>,
 ) -> Result<JsValue, JsError> {
-    to_js(calls::walk(from_js("gait", gait)?, lift, samples, stride))
+    to_js(calls::walk(
+        from_js("gait", gait)?,
+        lift,
+        samples,
+        stride,
+        sequencer,
+    ))
 }
 
 // ---------------------------------------------------------------- wheels
