@@ -93,8 +93,8 @@ pub struct Hybrid {
     radius: f64,
     /// A learner's sequencer in place of the built-in one, the error that
     /// stopped it, and whether the last search found no way.
-    script: Option<kinolab_script::Script>,
-    pub failed: Option<kinolab_script::ScriptError>,
+    script: Option<Box<kinolab_script::Script>>,
+    pub failed: Option<Box<kinolab_script::ScriptError>>,
     no_path: bool,
 }
 
@@ -106,7 +106,7 @@ impl Hybrid {
             sequencer: Sequencer::default(),
             skills: Skills::avoid_and_go(&settings.body),
             radius: settings.body.radius(),
-            script: settings.sequencer.clone(),
+            script: settings.sequencer.clone().map(Box::new),
             failed: None,
             no_path: false,
         })
@@ -184,7 +184,7 @@ impl Hybrid {
         {
             Some(Ok(d)) => d,
             Some(Err(e)) => {
-                self.failed = Some(e);
+                self.failed = Some(Box::new(e));
                 self.script = None;
                 return stopped();
             }

@@ -148,7 +148,7 @@ impl Controller {
     /// The error that stopped a learner's sequencer, if one did.
     pub fn failed(&self) -> Option<&kinolab_script::ScriptError> {
         match self {
-            Controller::Hybrid(c) => c.failed.as_ref(),
+            Controller::Hybrid(c) => c.failed.as_deref(),
             _ => None,
         }
     }
