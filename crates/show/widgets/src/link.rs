@@ -89,6 +89,11 @@ pub fn write<T: Serialize + PartialEq, E: Serialize>(
     if !moment.events.is_empty() {
         lines += &format!("@events: {}\n", serde_json::to_string(&moment.events).ok()?);
     }
+    if lines.is_empty() {
+        // Every setting at the schema's default: say so, since a link with
+        // no lines at all is one cut short.
+        lines += "@t: 0\n";
+    }
     let mut text = String::from(SETTINGS);
     URL_SAFE_NO_PAD.encode_string(lines.as_bytes(), &mut text);
     (text.len() <= MAX_LEN).then_some(text)
@@ -110,6 +115,9 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
         .decode(body)
         .map_err(|_| "it is damaged (cut short or altered)".to_owned())?;
     let lines = String::from_utf8(bytes).map_err(|_| "it is damaged (not text)".to_owned())?;
+    if lines.trim().is_empty() {
+        return Err("it is empty (cut short)".into());
+    }
     let mut params = Vec::new();
     let mut moment = Moment::default();
     for line in lines.lines() {
@@ -230,11 +238,21 @@ mod tests {
         assert!(read_legs(&text[..text.len() - 2]).is_err(), "cut short");
         assert!(read_legs("a!!!").is_err());
         assert!(read_legs(&format!("b{}", "A".repeat(MAX_LEN))).is_err());
+        assert!(read_legs(&encode("")).is_err(), "nothing at all");
         assert_eq!(
-            read_legs(&encode("")),
+            read_legs(&encode("@t: 0\n")),
             Ok(Legs { legs: 2 }),
             "the schema's default"
         );
+        // Settings back at the schema's defaults still make a link.
+        let back = write(
+            "leg-events",
+            &Legs { legs: 2 },
+            &Legs { legs: 4 },
+            &Moment::<()>::default(),
+        )
+        .unwrap_or_default();
+        assert_eq!(read_legs(&back), Ok(Legs { legs: 2 }));
     }
 
     #[test]

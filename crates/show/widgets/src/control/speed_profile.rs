@@ -1,5 +1,5 @@
 //! A trapezoidal speed profile: accelerate, cruise, brake, over a distance,
-//! with the limits on sliders.
+//! with the limits on sliders; the plot saved as PNG or CSV.
 
 use egui::RichText;
 use egui_plot::{Plot, PlotPoints};
@@ -8,87 +8,94 @@ use kinolab_control::Profile;
 use serde::{Deserialize, Serialize};
 
 use crate::draw::plot::{series_legend, series_lines};
-use crate::link;
-use crate::widget::{LabWidget, Params, number};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::widget::{LabWidget, Params, range};
+
+/// The widget's name in the schema.
+const NAME: &str = "speed-profile";
 
 /// The plotted series, in palette order.
 const NAMES: [&str; 2] = ["speed v (m/s)", "distance s (m)"];
 
-/// The limits on the sliders, and what a link carries.
+/// Samples along the profile.
+const SAMPLES: u32 = 200;
+
+/// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-struct SpeedProfile {
+#[serde(rename_all = "kebab-case")]
+struct Settings {
+    distance: f64,
+    max_speed: f64,
+    max_accel: f64,
+}
+
+/// The links of the first format: the three sliders.
+#[derive(Deserialize)]
+struct Legacy {
     distance: f64,
     max_speed: f64,
     max_accel: f64,
 }
 
 struct Widget {
-    now: SpeedProfile,
-    initial: SpeedProfile,
+    settings: Settings,
+    initial: Settings,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let now = SpeedProfile {
-        distance: number(p, "distance"),
-        max_speed: number(p, "max-speed"),
-        max_accel: number(p, "max-accel"),
-    };
-    Ok(Box::new(Widget { now, initial: now }))
+    let settings: Settings = p.settings()?;
+    Ok(Box::new(Widget {
+        settings,
+        initial: settings,
+    }))
 }
 
-impl LabWidget for Widget {
-    fn ui(&mut self, ui: &mut egui::Ui) {
-        self.now.ui(ui);
+impl Settings {
+    fn profile(&self) -> Profile {
+        Profile::new(self.distance, self.max_speed, self.max_accel)
     }
 
-    fn state(&self) -> Option<String> {
-        link::changed(&self.now, &self.initial)
-    }
-
-    fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(s) = link::decode::<SpeedProfile>(state)
-            && [s.distance, s.max_speed, s.max_accel]
-                .iter()
-                .all(|v| v.is_finite())
-        {
-            self.now = SpeedProfile {
-                distance: s.distance.clamp(0.05, 5.0),
-                max_speed: s.max_speed.clamp(0.05, 2.0),
-                max_accel: s.max_accel.clamp(0.1, 5.0),
-            };
-        }
-        Ok(())
+    /// Speed and distance against time, sampled evenly.
+    fn series(&self) -> Vec<(&'static str, Vec<[f64; 2]>)> {
+        let p = self.profile();
+        let total = p.duration();
+        let times: Vec<f64> = (0..=SAMPLES)
+            .map(|i| total * f64::from(i) / f64::from(SAMPLES))
+            .collect();
+        let speed = times.iter().map(|&t| [t, p.speed(t)]).collect();
+        let covered = times.iter().map(|&t| [t, p.covered(t)]).collect();
+        NAMES.into_iter().zip([speed, covered]).collect()
     }
 }
 
-impl SpeedProfile {
-    fn ui(&mut self, ui: &mut egui::Ui) {
+impl Widget {
+    fn sliders(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.settings;
         crate::widget::control_row(ui, |ui| {
             ui.add(
-                egui::Slider::new(&mut self.distance, 0.05..=5.0)
+                egui::Slider::new(&mut s.distance, range(NAME, "distance"))
                     .text("distance (m)")
                     .fixed_decimals(2),
             );
             ui.add(
-                egui::Slider::new(&mut self.max_speed, 0.05..=2.0)
+                egui::Slider::new(&mut s.max_speed, range(NAME, "max-speed"))
                     .text("max speed (m/s)")
                     .fixed_decimals(2),
             );
             ui.add(
-                egui::Slider::new(&mut self.max_accel, 0.1..=5.0)
+                egui::Slider::new(&mut s.max_accel, range(NAME, "max-accel"))
                     .text("max accel (m/s²)")
                     .fixed_decimals(1),
             );
         });
-        let p = Profile::new(self.distance, self.max_speed, self.max_accel);
-        let total = p.duration();
-        let n = 200;
-        let times: Vec<f64> = (0..=n)
-            .map(|i| total * f64::from(i) / f64::from(n))
-            .collect();
-        let speed: PlotPoints<'_> = times.iter().map(|&t| [t, p.speed(t)]).collect();
-        let covered: PlotPoints<'_> = times.iter().map(|&t| [t, p.covered(t)]).collect();
+    }
+
+    /// The plot; the area it took on screen.
+    fn plot(&self, ui: &mut egui::Ui) -> egui::Rect {
+        let series = self.settings.series();
         let width = ui.available_width();
+        let top = ui.cursor().min;
         Plot::new(ui.scope_id().with("speed-profile"))
             .width(width)
             .height(200.0)
@@ -97,13 +104,36 @@ impl SpeedProfile {
             .include_x(0.0)
             .allow_scroll(false)
             .show(ui, |plot| {
-                series_lines(
-                    plot,
-                    NAMES.into_iter().zip([speed, covered]).collect(),
-                    None,
-                );
+                let lines = series
+                    .into_iter()
+                    .map(|(name, points)| (name, PlotPoints::from(points)))
+                    .collect();
+                series_lines(plot, lines, None);
             });
         series_legend(ui, &NAMES, &[]);
+        egui::Rect::from_min_max(top, egui::pos2(top.x + width, ui.cursor().min.y))
+    }
+
+    fn exports(&self, ui: &mut egui::Ui, plot: egui::Rect) {
+        let csv = || export::series_csv("t (s)", &self.settings.series());
+        export::bar(
+            ui,
+            ui.scope_id().with("speed-profile-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-speed-profile.png",
+                    rect: plot,
+                },
+                Export::Csv {
+                    file: "kinolab-speed-profile.csv",
+                    make: &csv,
+                },
+            ],
+        );
+    }
+
+    fn words(&self, ui: &mut egui::Ui) {
+        let p = self.settings.profile();
         let shape = if p.cruise > 0.0 {
             format!(
                 "Trapezoid: ramps of {} s cover {} m together, then {} s at {} m/s.",
@@ -115,11 +145,94 @@ impl SpeedProfile {
         } else {
             format!(
                 "Triangle: too short to reach {} m/s; the speed peaks at √(d·a) = {} m/s.",
-                fixed(self.max_speed, 2),
+                fixed(self.settings.max_speed, 2),
                 fixed(p.peak, 2)
             )
         };
-        ui.label(format!("{shape} Total {} s.", fixed(total, 2)));
+        ui.label(format!("{shape} Total {} s.", fixed(p.duration(), 2)));
         ui.label(RichText::new("The area under the speed curve is the distance.").small());
+    }
+}
+
+impl LabWidget for Widget {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        self.sliders(ui);
+        let plot = self.plot(ui);
+        self.words(ui);
+        self.exports(ui, plot);
+    }
+
+    fn state(&self) -> Option<String> {
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
+    }
+
+    fn restore(&mut self, state: &str) -> Result<(), String> {
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => Settings {
+                    distance: old.distance,
+                    max_speed: old.max_speed,
+                    max_accel: old.max_accel,
+                },
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        self.settings = settings;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::spec;
+
+    fn widget(params: &[(&str, &str)]) -> Widget {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        Widget {
+            settings,
+            initial: settings,
+        }
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = link::encode(&(2.0_f64, 0.8_f64, 1.5_f64)).unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(
+            w.settings,
+            Settings {
+                distance: 2.0,
+                max_speed: 0.8,
+                max_accel: 1.5
+            }
+        );
+        let bad = link::encode(&(2.0_f64, 9.0_f64, 1.5_f64)).unwrap_or_default();
+        let mut w = widget(&[("distance", "3")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.distance, 3.0);
+    }
+
+    #[test]
+    fn settings_round_trip_and_the_csv_has_a_row_per_sample() {
+        let mut w = widget(&[]);
+        assert_eq!(w.state(), None);
+        w.settings.max_speed = 0.25;
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+        let csv = export::series_csv("t (s)", &w.settings.series());
+        assert_eq!(csv.lines().count(), 1 + SAMPLES as usize + 1);
     }
 }

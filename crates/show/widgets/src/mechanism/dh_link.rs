@@ -9,61 +9,101 @@ use kinolab_common::display::signed;
 use kinolab_mechanism::dh::{Convention, link, steps};
 use kinolab_mechanism::exercise::Task;
 use kinolab_mechanism::{Pose, Vector3};
+use serde::{Deserialize, Serialize};
 
 use crate::draw::canvas;
 use crate::draw::labels::Labels;
 use crate::draw::scene3d::{Camera, ViewKind, draw_frame, draw_grid};
-use crate::link as state_link;
+use crate::export::{self, Export};
+use crate::link::{self as state_link, Moment};
 use crate::theme;
 use crate::widget::{LabWidget, Params, feedback_ui};
 
+/// The widget's name in the schema.
+const NAME: &str = "dh-link";
+
+/// What the lesson sets and a link carries: the schema's parameters. The
+/// rows are `a` (m), `α` (°), `d` (m), `θ` (°).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    convention: Dh,
+    row: [f64; 4],
+    target: Option<[f64; 4]>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum Dh {
+    Standard,
+    Modified,
+}
+
+impl Dh {
+    fn convention(self) -> Convention {
+        match self {
+            Dh::Standard => Convention::StandardDh,
+            Dh::Modified => Convention::ModifiedDh,
+        }
+    }
+}
+
+/// The slider spans: a and d in metres, the angles in degrees.
+const SPANS: [(&str, f64, &str); 4] = [
+    ("a", 1.0, " m"),
+    ("α", 180.0, "°"),
+    ("d", 1.0, " m"),
+    ("θ", 180.0, "°"),
+];
+
 struct DhLink {
     convention: Convention,
-    /// a (m), α (°), d (m), θ (°).
-    row: [f64; 4],
-    initial: [f64; 4],
+    settings: Settings,
+    initial: Settings,
     camera: Camera,
     task: Option<Task>,
     feedback: Option<Feedback>,
 }
 
-fn row_of(p: &Params, name: &str) -> Option<[f64; 4]> {
-    match p.numbers(name)? {
-        [a, alpha, d, theta] => Some([*a, *alpha, *d, *theta]),
-        _ => None,
-    }
-}
-
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let convention = match p.choice("convention") {
-        Some("modified") => Convention::ModifiedDh,
-        _ => Convention::StandardDh,
-    };
-    let row = row_of(p, "row").unwrap_or_default();
-    let task = row_of(p, "target").map(|[a, alpha, d, theta]| Task::DhRow {
-        convention,
-        target: [a, alpha.to_radians(), d, theta.to_radians()],
-    });
-    Ok(Box::new(DhLink {
-        convention,
-        row,
-        initial: row,
-        camera: Camera::new(ViewKind::Orbit, [0.3, 0.0, 0.2], 0.8),
-        task,
-        feedback: None,
-    }))
+    let settings: Settings = p.settings()?;
+    Ok(Box::new(DhLink::new(settings)))
 }
 
 const NAMES_STANDARD: [&str; 4] = ["Rz(θ)", "Tz(d)", "Tx(a)", "Rx(α)"];
 const NAMES_MODIFIED: [&str; 4] = ["Rx(α)", "Tx(a)", "Rz(θ)", "Tz(d)"];
 
 impl DhLink {
+    fn new(settings: Settings) -> Self {
+        let mut w = DhLink {
+            convention: settings.convention.convention(),
+            settings,
+            initial: settings,
+            camera: Camera::new(ViewKind::Orbit, [0.3, 0.0, 0.2], 0.8),
+            task: None,
+            feedback: None,
+        };
+        w.apply(settings);
+        w
+    }
+
+    /// Take `settings`: the row, the convention and the exercise's target.
+    fn apply(&mut self, settings: Settings) {
+        self.convention = settings.convention.convention();
+        let convention = self.convention;
+        self.task = settings.target.map(|[a, alpha, d, theta]| Task::DhRow {
+            convention,
+            target: [a, alpha.to_radians(), d, theta.to_radians()],
+        });
+        self.settings = settings;
+        self.feedback = None;
+    }
+
     fn radians(&self) -> [f64; 4] {
         [
-            self.row[0],
-            self.row[1].to_radians(),
-            self.row[2],
-            self.row[3].to_radians(),
+            self.settings.row[0],
+            self.settings.row[1].to_radians(),
+            self.settings.row[2],
+            self.settings.row[3].to_radians(),
         ]
     }
 
@@ -84,18 +124,10 @@ impl DhLink {
         egui::Grid::new(ui.scope_id().with("dh"))
             .num_columns(2)
             .show(ui, |ui| {
-                for (k, (label, range, unit)) in [
-                    ("a", -1.0..=1.0, " m"),
-                    ("α", -180.0..=180.0, "°"),
-                    ("d", -1.0..=1.0, " m"),
-                    ("θ", -180.0..=180.0, "°"),
-                ]
-                .into_iter()
-                .enumerate()
-                {
+                for (k, (label, span, unit)) in SPANS.into_iter().enumerate() {
                     let name = ui.label(label);
                     let angle = k % 2 == 1;
-                    let slider = egui::Slider::new(&mut self.row[k], range)
+                    let slider = egui::Slider::new(&mut self.settings.row[k], -span..=span)
                         .suffix(unit)
                         .fixed_decimals(if angle { 0 } else { 2 })
                         .step_by(if angle { 1.0 } else { 0.01 });
@@ -226,53 +258,86 @@ impl LabWidget for DhLink {
             egui::FontId::proportional(theme::LABEL_SIZE),
             ui.visuals().weak_text_color(),
         );
+        export::bar(
+            ui,
+            ui.scope_id().with("dh-link-exports"),
+            &[Export::Png {
+                file: "kinolab-dh-link.png",
+                rect,
+            }],
+        );
         ui.label("The link's transform, frame i seen from frame i−1:");
         matrix(ui, &frame_i.to_homogeneous());
         self.exercise(ui);
     }
 
     fn state(&self) -> Option<String> {
-        (self.row != self.initial)
-            .then(|| state_link::encode(&self.row))
-            .flatten()
+        state_link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(row) = state_link::decode::<[f64; 4]>(state)
-            && row.iter().all(|v| v.is_finite())
-        {
-            self.row = [
-                row[0].clamp(-1.0, 1.0),
-                row[1].clamp(-180.0, 180.0),
-                row[2].clamp(-1.0, 1.0),
-                row[3].clamp(-180.0, 180.0),
-            ];
-        }
+        let settings = match state_link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match state_link::decode::<[f64; 4]>(state) {
+                // The first format: the row alone.
+                Some(row) => Settings {
+                    row,
+                    ..self.initial
+                },
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        state_link::check(NAME, &settings)?;
+        self.apply(settings);
         Ok(())
     }
 }
 
 #[cfg(test)]
 mod tests {
+    use super::*;
     use crate::registry::{create, spec};
+
+    fn widget(params: &[(&str, &str)]) -> DhLink {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        DhLink::new(p.settings().unwrap_or_else(|e| panic!("{e}")))
+    }
 
     #[test]
     fn rows_round_trip_through_links() {
-        let block = spec(
-            "dh-link",
-            &[("row", "0.5, 90, 0.2, 30"), ("convention", "modified")],
-        );
-        let Ok(mut w) = create(&block) else {
-            panic!("the row is valid")
-        };
+        let params = [("row", "0.5, 90, 0.2, 30"), ("convention", "modified")];
+        let mut w = widget(&params);
         assert_eq!(w.state(), None, "as the lesson set it up");
-        let state = crate::link::encode(&[0.1, -90.0, 0.0, 45.0]).unwrap_or_default();
-        let _ = w.restore(&state);
-        assert_eq!(w.state(), Some(state));
-        // Out-of-range values from a damaged link are clamped, never kept.
-        let _ = w.restore(&crate::link::encode(&[9.0, 0.0, 0.0, 0.0]).unwrap_or_default());
-        assert_eq!(w.state(), crate::link::encode(&[1.0, 0.0, 0.0, 0.0]));
+        w.settings.row = [0.1, -90.0, 0.0, 45.0];
+        let state = w.state().unwrap_or_default();
+        let mut again = widget(&params);
+        assert_eq!(again.restore(&state), Ok(()));
+        assert_eq!(again.settings, w.settings);
+        // A link carries the convention and the exercise too.
+        let mut other = widget(&[]);
+        assert_eq!(other.restore(&state), Ok(()));
+        assert_eq!(other.convention, Convention::ModifiedDh);
         assert!(create(&spec("dh-link", &[("row", "1, 2, 3")])).is_err());
         assert!(create(&spec("dh-link", &[("convention", "craig")])).is_err());
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = state_link::encode(&[0.1_f64, -90.0, 0.0, 45.0]).unwrap_or_default();
+        let mut w = widget(&[("convention", "modified")]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(w.settings.row, [0.1, -90.0, 0.0, 45.0]);
+        assert_eq!(w.settings.convention, Dh::Modified);
+        // Out of the schema's range: refused, the lesson's row kept.
+        let bad = state_link::encode(&[9.0_f64, 0.0, 0.0, 0.0]).unwrap_or_default();
+        let mut w = widget(&[("row", "0.5, 90, 0.2, 30")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.row, [0.5, 90.0, 0.2, 30.0]);
     }
 }

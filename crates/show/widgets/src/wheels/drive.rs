@@ -14,33 +14,59 @@ use super::chassis::{
 };
 use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, canvas, grid, placed, placed_dir};
-use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
+use crate::widget::{LabWidget, Params, range};
+
+/// The widget's name in the schema.
+const NAME: &str = "wheel-drive";
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
 enum Mode {
-    /// Spins in, twist out.
-    Wheels,
     /// Twist in, spins (and steering) out.
     Twist,
+    /// Spins in, twist out.
+    Wheels,
 }
 
-/// What the learner sets, and what a link carries.
+/// What the lesson sets and a link carries: the schema's parameters (the
+/// robot, the mode, the twist, and the spins while the learner sets them).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Command {
+struct Settings {
+    robot: Option<String>,
+    layout: Option<String>,
     mode: Mode,
-    /// Commanded twist (twist mode).
+    forward: f64,
+    sideways: f64,
+    turn: f64,
+    /// One per wheel, rad/s (a passive wheel's is ignored); `None` in
+    /// twist mode.
+    spins: Option<Vec<f64>>,
+}
+
+/// The links of the first format: the mode (wheels first), the twist and
+/// the spins (`None` for passive wheels).
+#[derive(Deserialize)]
+struct Legacy {
+    mode: LegacyMode,
     twist: [f64; 3],
-    /// Commanded spins, rad/s (wheels mode); `None` for passive wheels.
     spins: Vec<Option<f64>>,
 }
 
+#[derive(Deserialize)]
+enum LegacyMode {
+    Wheels,
+    Twist,
+}
+
 struct Drive {
+    settings: Settings,
+    initial: Settings,
     start: Chassis,
     /// The robot as it is steered now.
     chassis: Chassis,
-    command: Command,
-    initial: Command,
     pose: [f64; 3],
     trail: VecDeque<[f64; 2]>,
     running: bool,
@@ -48,11 +74,17 @@ struct Drive {
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     let chassis = kinolab_schema::robot_of(p)?;
-    let mode = match p.choice("mode") {
-        Some("wheels") => Mode::Wheels,
-        _ => Mode::Twist,
+    Ok(Box::new(Drive::new(chassis, p.settings()?)))
+}
+
+/// The robot that `settings` name, through the schema.
+fn robot(settings: &Settings) -> Result<Chassis, String> {
+    let spec = kinolab_lessons::WidgetSpec {
+        name: NAME.to_owned(),
+        params: kinolab_schema::settings::to_params(NAME, settings)?,
+        line: 0,
     };
-    Ok(Box::new(Drive::new(chassis, mode)))
+    kinolab_schema::robot_of(&kinolab_schema::validate(&spec)?)
 }
 
 /// Passive wheels (castors, balls) have no spin a learner can command.
@@ -63,42 +95,59 @@ fn driven(kind: WheelKind) -> bool {
 const TRAIL: usize = 1500;
 
 impl Drive {
-    fn new(chassis: Chassis, mode: Mode) -> Self {
+    fn new(chassis: Chassis, settings: Settings) -> Self {
         let mut drive = Self {
             start: chassis.clone(),
             chassis,
-            command: Command {
-                mode,
-                twist: [0.3, 0.0, 0.4],
-                spins: Vec::new(),
-            },
-            initial: Command {
-                mode,
-                twist: [0.0; 3],
-                spins: Vec::new(),
-            },
+            initial: settings.clone(),
+            settings,
             pose: [0.0, 0.0, 0.0],
             trail: VecDeque::new(),
             running: true,
         };
-        drive.spins_from_twist();
-        drive.initial = drive.command.clone();
+        if drive.settings.mode == Mode::Wheels && drive.settings.spins.is_none() {
+            drive.spins_from_twist();
+        }
+        drive.initial = drive.settings.clone();
         drive
     }
+
+    /// The commanded twist (forward, sideways, turn).
+    fn twist(&self) -> [f64; 3] {
+        let s = &self.settings;
+        [s.forward, s.sideways, s.turn]
+    }
+
+    /// The commanded spins, `None` for passive wheels.
+    fn spins(&self) -> Vec<Option<f64>> {
+        let spins = self.settings.spins.clone().unwrap_or_default();
+        self.chassis
+            .wheels()
+            .iter()
+            .enumerate()
+            .map(|(i, w)| driven(w.kind).then(|| spins.get(i).copied().unwrap_or(0.0)))
+            .collect()
+    }
+
     /// Start the wheels mode from the spins that produce the current twist
     /// (or the nearest feasible one).
     fn spins_from_twist(&mut self) {
-        let twist = self.feasible_twist(Vector3::from(self.command.twist));
-        self.command.spins = match self.chassis.inverse(twist) {
+        let twist = self.feasible_twist(Vector3::from(self.twist()));
+        let span = range(NAME, "spins");
+        let spins = match self.chassis.inverse(twist) {
             Ok(ik) => self
                 .chassis
                 .wheels()
                 .iter()
                 .zip(&ik.wheels)
-                .map(|(w, c)| driven(w.kind).then_some(round2(c.spin)))
+                .map(|(w, c)| {
+                    let spin = round2(c.spin).clamp(*span.start(), *span.end());
+                    if driven(w.kind) { spin } else { 0.0 }
+                })
                 .collect(),
-            Err(_) => vec![None; self.chassis.wheels().len()],
+            Err(_) => vec![0.0; self.chassis.wheels().len()],
         };
+        self.settings.spins = Some(spins);
     }
 
     /// The requested twist projected onto what the wheels allow now (or, in
@@ -115,9 +164,9 @@ impl Drive {
     /// The twist to drive with this frame, and a note when the request
     /// could not be met as asked.
     fn current_twist(&mut self) -> (Vector3<f64>, Option<String>) {
-        match self.command.mode {
+        match self.settings.mode {
             Mode::Twist => {
-                let want = Vector3::from(self.command.twist);
+                let want = Vector3::from(self.twist());
                 match self.chassis.inverse(want) {
                     Ok(ik) if ik.feasible => {
                         // Steer the wheels as inverse kinematics says.
@@ -159,7 +208,7 @@ impl Drive {
                     Err(e) => (Vector3::zeros(), Some(e.to_string())),
                 }
             }
-            Mode::Wheels => match self.chassis.forward(&self.command.spins) {
+            Mode::Wheels => match self.chassis.forward(&self.spins()) {
                 Ok(fk) => {
                     let note = if !fk.consistent {
                         Some(format!(
@@ -180,19 +229,15 @@ impl Drive {
 
     fn controls(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
-            let before = self.command.mode;
-            ui.selectable_value(
-                &mut self.command.mode,
-                Mode::Twist,
-                "Set the twist (inverse)",
-            );
-            ui.selectable_value(
-                &mut self.command.mode,
-                Mode::Wheels,
-                "Set wheel spins (forward)",
-            );
-            if before != self.command.mode && self.command.mode == Mode::Wheels {
-                self.spins_from_twist();
+            let before = self.settings.mode;
+            let mode = &mut self.settings.mode;
+            ui.selectable_value(mode, Mode::Twist, "Set the twist (inverse)");
+            ui.selectable_value(mode, Mode::Wheels, "Set wheel spins (forward)");
+            if before != self.settings.mode {
+                match self.settings.mode {
+                    Mode::Wheels => self.spins_from_twist(),
+                    Mode::Twist => self.settings.spins = None,
+                }
             }
             ui.separator();
             if ui
@@ -207,45 +252,47 @@ impl Drive {
                 self.trail.clear();
             }
             if ui.button("Stop").clicked() {
-                self.command.twist = [0.0; 3];
-                for s in self.command.spins.iter_mut().flatten() {
-                    *s = 0.0;
+                let s = &mut self.settings;
+                (s.forward, s.sideways, s.turn) = (0.0, 0.0, 0.0);
+                for v in s.spins.iter_mut().flatten() {
+                    *v = 0.0;
                 }
             }
         });
-        match self.command.mode {
+        ui.vertical(|ui| match self.settings.mode {
             Mode::Twist => {
-                ui.vertical(|ui| {
-                    for (k, (label, range)) in [
-                        ("forward (m/s)", 1.0),
-                        ("sideways (m/s)", 1.0),
-                        ("turn (rad/s)", 2.0),
-                    ]
-                    .into_iter()
-                    .enumerate()
-                    {
-                        ui.add(
-                            egui::Slider::new(&mut self.command.twist[k], -range..=range)
-                                .text(label)
-                                .fixed_decimals(2),
-                        );
-                    }
-                });
+                let s = &mut self.settings;
+                for (value, param, label) in [
+                    (&mut s.forward, "forward", "forward (m/s)"),
+                    (&mut s.sideways, "sideways", "sideways (m/s)"),
+                    (&mut s.turn, "turn", "turn (rad/s)"),
+                ] {
+                    ui.add(
+                        egui::Slider::new(value, range(NAME, param))
+                            .text(label)
+                            .fixed_decimals(2),
+                    );
+                }
             }
             Mode::Wheels => {
-                ui.vertical(|ui| {
-                    for (i, s) in self.command.spins.iter_mut().enumerate() {
-                        if let Some(s) = s {
-                            ui.add(
-                                egui::Slider::new(s, -20.0..=20.0)
-                                    .text(format!("wheel {} (rad/s)", i + 1))
-                                    .fixed_decimals(1),
-                            );
-                        }
+                let kinds: Vec<bool> = self
+                    .chassis
+                    .wheels()
+                    .iter()
+                    .map(|w| driven(w.kind))
+                    .collect();
+                let spins = self.settings.spins.get_or_insert_default();
+                for (i, (s, driven)) in spins.iter_mut().zip(kinds).enumerate() {
+                    if driven {
+                        ui.add(
+                            egui::Slider::new(s, range(NAME, "spins"))
+                                .text(format!("wheel {} (rad/s)", i + 1))
+                                .fixed_decimals(1),
+                        );
                     }
-                });
+                }
             }
-        }
+        });
     }
 }
 
@@ -257,22 +304,32 @@ impl Drive {
     /// Arrow keys drive while the floor has the pointer or the focus; Q
     /// and E slide sideways.
     fn keyboard(&mut self, ui: &egui::Ui, floor: &egui::Response) {
-        if !(floor.hovered() || floor.has_focus()) || self.command.mode != Mode::Twist {
+        if !(floor.hovered() || floor.has_focus()) || self.settings.mode != Mode::Twist {
             return;
         }
-        let t = &mut self.command.twist;
+        let s = &mut self.settings;
         ui.input(|i| {
             let step = 0.02;
-            for (key, k, by, limit) in [
-                (Key::ArrowUp, 0, step, 1.0),
-                (Key::ArrowDown, 0, -step, 1.0),
-                (Key::ArrowLeft, 2, 2.0 * step, 2.0),
-                (Key::ArrowRight, 2, -2.0 * step, 2.0),
-                (Key::Q, 1, step, 1.0),
-                (Key::E, 1, -step, 1.0),
+            let keys = |up: Key, down: Key, by: f64| {
+                f64::from(u8::from(i.key_down(up))) * by
+                    - f64::from(u8::from(i.key_down(down))) * by
+            };
+            for (value, by, param) in [
+                (
+                    &mut s.forward,
+                    keys(Key::ArrowUp, Key::ArrowDown, step),
+                    "forward",
+                ),
+                (
+                    &mut s.turn,
+                    keys(Key::ArrowLeft, Key::ArrowRight, 2.0 * step),
+                    "turn",
+                ),
+                (&mut s.sideways, keys(Key::Q, Key::E, step), "sideways"),
             ] {
-                if i.key_down(key) {
-                    t[k] = (t[k] + by).clamp(-limit, limit);
+                if by != 0.0 {
+                    let span = range(NAME, param);
+                    *value = (*value + by).clamp(*span.start(), *span.end());
                 }
             }
         });
@@ -407,7 +464,7 @@ impl Drive {
             fixed(self.pose[0], 2), fixed(self.pose[1], 2),
             fixed(kinolab_common::angle::wrap(self.pose[2]).to_degrees(), 0)
         ));
-        if self.command.mode == Mode::Twist
+        if self.settings.mode == Mode::Twist
             && let Ok(ik) = self.chassis.inverse(twist)
         {
             let spins: Vec<String> = ik
@@ -448,6 +505,14 @@ impl LabWidget for Drive {
         let (twist, note) = self.current_twist();
         self.step(ui, twist);
         self.floor(ui, &painter, rect, twist);
+        export::bar(
+            ui,
+            ui.scope_id().with("wheel-drive-exports"),
+            &[Export::Png {
+                file: "kinolab-wheel-drive.png",
+                rect,
+            }],
+        );
         self.readouts(ui, twist);
         // One line kept for notes, so the layout does not jump.
         ui.label(RichText::new(note.unwrap_or_default()).color(theme::error_color(ui)));
@@ -460,36 +525,99 @@ impl LabWidget for Drive {
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.command, &self.initial)
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(c) = link::decode::<Command>(state)
-            && c.spins.len() == self.chassis.wheels().len()
-            && c.twist.iter().all(|v| v.is_finite())
-            && c.spins.iter().flatten().all(|v| v.is_finite())
-        {
-            self.command = Command {
-                twist: [
-                    c.twist[0].clamp(-1.0, 1.0),
-                    c.twist[1].clamp(-1.0, 1.0),
-                    c.twist[2].clamp(-2.0, 2.0),
-                ],
-                spins: c
-                    .spins
-                    .iter()
-                    .map(|s| s.map(|v| v.clamp(-20.0, 20.0)))
-                    .collect(),
-                mode: c.mode,
-            };
-        }
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => self.legacy(old),
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        let chassis = robot(&settings)?;
+        *self = Drive {
+            initial: self.initial.clone(),
+            ..Drive::new(chassis, settings)
+        };
         Ok(())
+    }
+}
+
+impl Drive {
+    /// An old link's command, with the lesson's robot.
+    fn legacy(&self, old: Legacy) -> Settings {
+        let [forward, sideways, turn] = old.twist;
+        let mode = match old.mode {
+            LegacyMode::Wheels => Mode::Wheels,
+            LegacyMode::Twist => Mode::Twist,
+        };
+        Settings {
+            mode,
+            forward,
+            sideways,
+            turn,
+            spins: (mode == Mode::Wheels)
+                .then(|| old.spins.iter().map(|s| s.unwrap_or(0.0)).collect()),
+            ..self.initial.clone()
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn widget(params: &[(&str, &str)]) -> Drive {
+        let p = kinolab_schema::validate(&crate::registry::spec(NAME, params))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let chassis = kinolab_schema::robot_of(&p).unwrap_or_else(|e| panic!("{e}"));
+        Drive::new(chassis, p.settings().unwrap_or_else(|e| panic!("{e}")))
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        // Wheels mode (the first variant), a twist, two driven wheels and a castor.
+        let old = link::encode(&(
+            0_u32,
+            [0.2_f64, 0.0, -0.5],
+            vec![Some(3.0_f64), Some(-1.5), None],
+        ))
+        .unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(w.settings.mode, Mode::Wheels);
+        assert_eq!((w.settings.forward, w.settings.turn), (0.2, -0.5));
+        assert_eq!(w.settings.spins, Some(vec![3.0, -1.5, 0.0]));
+        assert_eq!(w.spins(), vec![Some(3.0), Some(-1.5), None]);
+        // Out of the schema's range: refused, the lesson's settings kept.
+        let bad =
+            link::encode(&(1_u32, [5.0_f64, 0.0, 0.0], vec![None::<f64>; 3])).unwrap_or_default();
+        let mut w = widget(&[("forward", "0.5")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.forward, 0.5);
+    }
+
+    #[test]
+    fn the_spins_travel_in_the_link() {
+        let mut w = widget(&[("mode", "wheels")]);
+        assert_eq!(w.state(), None);
+        assert_eq!(w.settings.spins.as_ref().map(Vec::len), Some(3));
+        if let Some(spins) = &mut w.settings.spins {
+            spins[0] = 7.5;
+        }
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+    }
 
     /// The castor's angle and how fast it still swings, for `twist`.
     fn castor(d: &Drive, twist: Vector3<f64>) -> (f64, f64) {
@@ -507,7 +635,9 @@ mod tests {
     fn a_castor_swings_round_to_trail_the_motion() {
         let chassis =
             kinolab_wheels::catalogue::robot("differential-drive").expect("in the catalogue");
-        let mut d = Drive::new(chassis, Mode::Twist);
+        let p = kinolab_schema::validate(&crate::registry::spec(NAME, &[]))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let mut d = Drive::new(chassis, p.settings().unwrap_or_else(|e| panic!("{e}")));
         let drive = |d: &mut Drive, twist: Vector3<f64>| {
             // A nudge off balance, as any real castor has, then 4 s.
             d.swing_castors(twist + Vector3::new(0.0, 0.0, 0.2), 0.05);

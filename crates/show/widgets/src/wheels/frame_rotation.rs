@@ -8,27 +8,37 @@ use serde::{Deserialize, Serialize};
 
 use crate::draw::labels::Labels;
 use crate::draw::{axes, canvas};
-use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
+use crate::widget::{LabWidget, Params, range};
 
-/// The heading and the inertial motion (ẋ_I, ẏ_I, θ̇): what the learner
-/// sets, and what a link carries.
+/// The widget's name in the schema.
+const NAME: &str = "frame-rotation";
+
+/// The heading and the inertial motion (ẋ_I, ẏ_I, θ̇): what the lesson
+/// sets and a link carries, the schema's parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-struct Setup {
+#[serde(rename_all = "kebab-case")]
+struct Settings {
+    theta_deg: f64,
+    motion: [f64; 3],
+}
+
+/// The links of the first format.
+#[derive(Deserialize)]
+struct Legacy {
     theta_deg: f64,
     inertial: [f64; 3],
 }
 
 struct FrameRotation {
-    setup: Setup,
-    initial: Setup,
+    setup: Settings,
+    initial: Settings,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let setup = Setup {
-        theta_deg: p.number("theta-deg").unwrap_or(30.0),
-        inertial: [1.0, 0.0, 0.0],
-    };
+    let setup: Settings = p.settings()?;
     Ok(Box::new(FrameRotation {
         setup,
         initial: setup,
@@ -51,25 +61,22 @@ impl FrameRotation {
     fn controls(&mut self, ui: &mut egui::Ui) {
         let s = &mut self.setup;
         ui.add(
-            egui::Slider::new(&mut s.theta_deg, -180.0..=180.0)
+            egui::Slider::new(&mut s.theta_deg, range(NAME, "theta-deg"))
                 .text("heading θ (°)")
                 .fixed_decimals(0),
         );
-        ui.add(
-            egui::Slider::new(&mut s.inertial[0], -1.0..=1.0)
-                .text("world x speed (m/s)")
-                .fixed_decimals(2),
-        );
-        ui.add(
-            egui::Slider::new(&mut s.inertial[1], -1.0..=1.0)
-                .text("world y speed (m/s)")
-                .fixed_decimals(2),
-        );
-        ui.add(
-            egui::Slider::new(&mut s.inertial[2], -1.0..=1.0)
-                .text("turn rate (rad/s)")
-                .fixed_decimals(2),
-        );
+        let motion = range(NAME, "motion");
+        for (value, text) in s.motion.iter_mut().zip([
+            "world x speed (m/s)",
+            "world y speed (m/s)",
+            "turn rate (rad/s)",
+        ]) {
+            ui.add(
+                egui::Slider::new(value, motion.clone())
+                    .text(text)
+                    .fixed_decimals(2),
+            );
+        }
     }
 
     /// The world's axes at the left, the robot turned by θ in the middle,
@@ -103,11 +110,7 @@ impl FrameRotation {
             [(p + x_r, "x_R"), (p + y_r, "y_R")],
             accent,
         );
-        let v = vec2(
-            self.setup.inertial[0] as f32,
-            -self.setup.inertial[1] as f32,
-        ) * scale
-            * 0.8;
+        let v = vec2(self.setup.motion[0] as f32, -self.setup.motion[1] as f32) * scale * 0.8;
         if v.length() > 1.0 {
             painter.arrow(p, v, Stroke::new(3.0, theme::good_color(ui)));
             labels.avoid_line(p, p + v);
@@ -138,7 +141,7 @@ impl FrameRotation {
                             ui.label(mono(signed(r[(row, col)], 3)));
                         }
                         ui.label(if row == 1 { "×" } else { " " });
-                        ui.label(mono(signed(self.setup.inertial[row], 3)));
+                        ui.label(mono(signed(self.setup.motion[row], 3)));
                         ui.end_row();
                     }
                 });
@@ -163,7 +166,7 @@ impl LabWidget for FrameRotation {
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.vertical(|ui| self.controls(ui));
         let r = rotation(self.setup.theta_deg.to_radians());
-        let robot = r * Vector3::from(self.setup.inertial);
+        let robot = r * Vector3::from(self.setup.motion);
         let size = vec2(ui.available_width().min(720.0), 260.0);
         let (response, painter) = canvas(ui, size, Sense::hover());
         self.drawing(ui, &painter, response.rect);
@@ -174,22 +177,34 @@ impl LabWidget for FrameRotation {
             along(robot.y, "to its left", "to its right", "m/s"),
             fixed(robot.z, 2),
         )).small());
+        export::bar(
+            ui,
+            ui.scope_id().with("frame-rotation-exports"),
+            &[Export::Png {
+                file: "kinolab-frames.png",
+                rect: response.rect,
+            }],
+        );
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.setup, &self.initial)
+        link::write(NAME, &self.setup, &self.initial, &Moment::<()>::default())
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(s) = link::decode::<Setup>(state)
-            && s.theta_deg.is_finite()
-            && s.inertial.iter().all(|v| v.is_finite())
-        {
-            self.setup = Setup {
-                theta_deg: s.theta_deg.clamp(-180.0, 180.0),
-                inertial: s.inertial.map(|v| v.clamp(-1.0, 1.0)),
-            };
-        }
+        let setup = match link::read::<Settings, ()>(NAME, state) {
+            Ok((setup, _)) => setup,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => Settings {
+                    theta_deg: old.theta_deg,
+                    motion: old.inertial,
+                },
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &setup)?;
+        self.setup = setup;
         Ok(())
     }
 }
@@ -197,6 +212,40 @@ impl LabWidget for FrameRotation {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::registry::spec;
+
+    fn widget(params: &[(&str, &str)]) -> FrameRotation {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let setup: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        FrameRotation {
+            setup,
+            initial: setup,
+        }
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = link::encode(&(-45.0_f64, [0.5_f64, -0.25, 1.0])).unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(
+            w.setup,
+            Settings {
+                theta_deg: -45.0,
+                motion: [0.5, -0.25, 1.0]
+            }
+        );
+        let bad = link::encode(&(-45.0_f64, [5.0_f64, 0.0, 0.0])).unwrap_or_default();
+        let mut w = widget(&[("theta-deg", "60")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.setup.theta_deg, 60.0);
+        // The new format carries the motion too.
+        w.setup.motion = [0.0, 0.5, -0.5];
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.setup, w.setup);
+    }
 
     #[test]
     fn motions_read_as_directions_not_signs() {

@@ -125,6 +125,21 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 "the open-loop plan: `line METRES`, `arc RADIUS DEGREES`, `turn DEGREES`, `;` between",
             ),
             param(
+                "starts",
+                Kind::Integer { min: 4, max: 100 },
+                Some("24"),
+                "many: how many starts on the 1 m circle around the goal",
+            ),
+            param(
+                "start-heading",
+                Kind::Number {
+                    min: -180.0,
+                    max: 180.0,
+                },
+                Some("0"),
+                "many: the heading every start faces, degrees",
+            ),
+            param(
                 "task",
                 Kind::Choice {
                     options: &["reach-within", "spot-unstable"],
@@ -158,6 +173,17 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 Some("3, 8, -1.5; 3, 2, -1.5; 3, 8, 1.5; 2, 6, -1"),
                 "spot-unstable: gain sets `k_rho, k_alpha, k_beta`, `;` between",
             ),
+            param(
+                "marked",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: 64,
+                    min: 1.0,
+                    max: 64.0,
+                },
+                None,
+                "spot-unstable: the gain sets marked unstable so far, by number (1 is the first)",
+            ),
         ],
         rules: Some(playground_rules),
     },
@@ -183,6 +209,20 @@ fn playground_rules(p: &Params) -> Result<(), String> {
     }
     if p.given("sets") && task != Some("spot-unstable") {
         return Err("`sets` goes with `task: spot-unstable`".into());
+    }
+    if let Some(marked) = p.numbers("marked") {
+        if task != Some("spot-unstable") {
+            return Err("`marked` goes with `task: spot-unstable`".into());
+        }
+        let sets = p.groups("sets").map_or(0, <[_]>::len);
+        if let Some(bad) = marked
+            .iter()
+            .find(|n| n.fract() != 0.0 || **n > sets as f64)
+        {
+            return Err(format!(
+                "`marked`: {bad} is not a gain set's number (1 to {sets})"
+            ));
+        }
     }
     Ok(())
 }

@@ -102,6 +102,17 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 None,
                 "spot-singular: joint values to judge, `;` between (one value per driven joint)",
             ),
+            param(
+                "marked",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: 64,
+                    min: 1.0,
+                    max: 64.0,
+                },
+                None,
+                "spot-singular: the configurations marked singular so far, by number (1 is the first)",
+            ),
         ],
         rules: Some(viewer_rules),
     },
@@ -168,6 +179,7 @@ fn viewer_rules(p: &Params) -> Result<(), String> {
             q.len()
         ));
     }
+    marked_rule(p)?;
     match p.choice("task") {
         Some("reach") if p.numbers("target").is_none() => {
             Err("`task: reach` needs `target: x, y` or `target: x, y, z`".into())
@@ -180,5 +192,25 @@ fn viewer_rules(p: &Params) -> Result<(), String> {
             Some(_) => Ok(()),
         },
         _ => Ok(()),
+    }
+}
+
+/// `marked` numbers some of the `sets` of a spot-singular task.
+fn marked_rule(p: &Params) -> Result<(), String> {
+    let Some(marked) = p.numbers("marked") else {
+        return Ok(());
+    };
+    if p.choice("task") != Some("spot-singular") {
+        return Err("`marked` goes with `task: spot-singular`".into());
+    }
+    let sets = p.groups("sets").map_or(0, <[_]>::len);
+    match marked
+        .iter()
+        .find(|n| n.fract() != 0.0 || **n > sets as f64)
+    {
+        Some(bad) => Err(format!(
+            "`marked`: {bad} is not a configuration's number (1 to {sets})"
+        )),
+        None => Ok(()),
     }
 }

@@ -37,6 +37,17 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 Some("no"),
                 "challenge: pick the wheels that keep a stuck layout from moving",
             ),
+            param(
+                "chosen",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: kinolab_wheels::MAX_WHEELS,
+                    min: 1.0,
+                    max: kinolab_wheels::MAX_WHEELS as f64,
+                },
+                None,
+                "find-disagreeing: the wheels picked so far, by number (1 is the first wheel)",
+            ),
         ],
         rules: Some(workbench_rules),
     },
@@ -54,21 +65,72 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 Some("twist"),
                 "what the learner sets: the chassis twist, or each wheel's spin",
             ),
+            param(
+                "forward",
+                Kind::Number {
+                    min: -1.0,
+                    max: 1.0,
+                },
+                Some("0.3"),
+                "twist: the speed forward, m/s",
+            ),
+            param(
+                "sideways",
+                Kind::Number {
+                    min: -1.0,
+                    max: 1.0,
+                },
+                Some("0"),
+                "twist: the speed to the left, m/s",
+            ),
+            param(
+                "turn",
+                Kind::Number {
+                    min: -2.0,
+                    max: 2.0,
+                },
+                Some("0.4"),
+                "twist: the turn rate, rad/s (anticlockwise)",
+            ),
+            param(
+                "spins",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: kinolab_wheels::MAX_WHEELS,
+                    min: -20.0,
+                    max: 20.0,
+                },
+                None,
+                "wheels: each wheel's spin, rad/s, one per wheel in order (a passive wheel's is ignored; default: the spins that make the twist)",
+            ),
         ],
-        rules: Some(robot_rules),
+        rules: Some(drive_rules),
     },
     WidgetSchema {
         name: "frame-rotation",
         summary: "inertial and robot frames and the rotation R(θ) between them",
-        params: &[param(
-            "theta-deg",
-            Kind::Number {
-                min: -180.0,
-                max: 180.0,
-            },
-            Some("30"),
-            "the robot's heading θ to start with, degrees",
-        )],
+        params: &[
+            param(
+                "theta-deg",
+                Kind::Number {
+                    min: -180.0,
+                    max: 180.0,
+                },
+                Some("30"),
+                "the robot's heading θ to start with, degrees",
+            ),
+            param(
+                "motion",
+                Kind::Numbers {
+                    min_count: 3,
+                    max_count: 3,
+                    min: -1.0,
+                    max: 1.0,
+                },
+                Some("1, 0, 0"),
+                "the motion in the world frame to start with: `x speed, y speed, turn rate` (m/s, m/s, rad/s)",
+            ),
+        ],
         rules: None,
     },
 ];
@@ -77,6 +139,24 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
 fn robot_rules(p: &Params) -> Result<(), String> {
     if p.given("robot") && p.given("layout") {
         return Err("give either `robot` or `layout`, not both".into());
+    }
+    Ok(())
+}
+
+/// One spin per wheel, and only with `mode: wheels`.
+fn drive_rules(p: &Params) -> Result<(), String> {
+    robot_rules(p)?;
+    if let Some(spins) = p.numbers("spins") {
+        if p.choice("mode") != Some("wheels") {
+            return Err("`spins` goes with `mode: wheels`".into());
+        }
+        let wheels = robot_of(p)?.wheels().len();
+        if spins.len() != wheels {
+            return Err(format!(
+                "`spins` needs {wheels} values (one per wheel), got {}",
+                spins.len()
+            ));
+        }
     }
     Ok(())
 }
@@ -110,6 +190,20 @@ fn workbench_rules(p: &Params) -> Result<(), String> {
     }
     if p.yes("find-disagreeing") && robot_of(p)?.disagreement().is_none() {
         return Err("`find-disagreeing` needs a layout that cannot move".into());
+    }
+    if let Some(chosen) = p.numbers("chosen") {
+        if !p.yes("find-disagreeing") {
+            return Err("`chosen` goes with `find-disagreeing: yes`".into());
+        }
+        let wheels = robot_of(p)?.wheels().len();
+        if let Some(bad) = chosen
+            .iter()
+            .find(|n| n.fract() != 0.0 || **n > wheels as f64)
+        {
+            return Err(format!(
+                "`chosen`: {bad} is not a wheel's number (1 to {wheels})"
+            ));
+        }
     }
     Ok(())
 }

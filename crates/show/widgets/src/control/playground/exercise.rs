@@ -7,32 +7,36 @@ use kinolab_common::display::fixed;
 use kinolab_control::Gains;
 use kinolab_control::exercise::Task;
 
-use super::settings::Settings;
-use super::{Exercise, Playground, Tab};
-use crate::widget::{Params, feedback_ui};
+use super::settings::{Settings, TaskKind, View, pose};
+use super::{Exercise, Playground};
+use crate::widget::feedback_ui;
 
-/// The task a lesson set up, if any.
-pub(super) fn from_params(p: &Params, set: &Settings) -> Result<Option<Exercise>, String> {
-    let task = match p.choice("task") {
-        Some("reach-within") => Task::ReachWithin {
-            start: set.start,
-            goal: set.goal,
-            time_limit: p.number("time-limit").unwrap_or(3.0),
-            forward_only: p.yes("forward-only"),
+/// The task the settings set up, if any, with the marks they carry.
+pub(super) fn from_settings(set: &Settings) -> Result<Option<Exercise>, String> {
+    let task = match set.task {
+        Some(TaskKind::ReachWithin) => Task::ReachWithin {
+            start: pose(set.start),
+            goal: pose(set.goal),
+            time_limit: set.time_limit,
+            forward_only: set.forward_only,
         },
-        Some("spot-unstable") => {
-            let sets = p
-                .groups("sets")
-                .unwrap_or_default()
+        Some(TaskKind::SpotUnstable) => {
+            let sets = set
+                .sets
                 .iter()
                 .map(|g| Gains::new(g[0], g[1], g[2]).map_err(|e| format!("parameter `sets`: {e}")))
                 .collect::<Result<Vec<_>, _>>()?;
             Task::SpotUnstable { sets }
         }
-        _ => return Ok(None),
+        None => return Ok(None),
     };
     let marks = match &task {
-        Task::SpotUnstable { sets } => vec![false; sets.len()],
+        Task::SpotUnstable { sets } => {
+            let marked = set.marked.clone().unwrap_or_default();
+            (1..=sets.len())
+                .map(|n| marked.contains(&(n as f64)))
+                .collect()
+        }
         Task::ReachWithin { .. } => Vec::new(),
     };
     Ok(Some(Exercise {
@@ -83,8 +87,8 @@ impl Playground {
         });
         if let Some(g) = load {
             self.set.gains = [g.k_rho, g.k_alpha, g.k_beta];
-            if self.tab == Tab::OpenVsClosed {
-                self.tab = Tab::Run;
+            if self.set.view == View::OpenVsClosed {
+                self.show(View::Run);
             }
         }
     }

@@ -1,22 +1,15 @@
-//! The playground's plots, and taking runs away: CSV (copy or save) and
-//! the plots as a PNG.
+//! The playground's plots, and what its export bar offers: the floor and
+//! plots as a PNG, the runs as CSV, and the run's file for `kinolab
+//! simulate` (or `kinolab batch` for many starts).
 
-use std::sync::{Arc, Mutex};
-
-use egui::RichText;
 use egui_plot::{Plot, PlotPoints};
 use kinolab_common::angle::wrap;
 use kinolab_control::{Sample, Trajectory};
 
 use super::Playground;
+use super::settings::pretty;
 use crate::draw::plot::{REFERENCE, series_legend, series_lines};
-use crate::export::{png_of, request_save};
-
-/// Where a requested screen capture lands when it arrives.
-type CaptureSlot = Arc<Mutex<Option<Arc<egui::ColorImage>>>>;
-
-/// A capture of the plots on its way: the area to crop, and the slot.
-pub(super) type Capture = (egui::Rect, CaptureSlot);
+use crate::export::{self, Export};
 
 /// The CSV columns.
 const CSV_HEADER: &str = "run,t,x,y,theta_deg,v,omega,rho,alpha_deg,beta_deg,wheel_speed";
@@ -51,14 +44,15 @@ fn csv(runs: &[(&str, &Trajectory)]) -> String {
 }
 
 impl Playground {
-    /// ρ, α, β and v, ω against time on linked axes, with the cursor.
-    pub(super) fn plots(&mut self, ui: &mut egui::Ui, t: &Trajectory, width: f32) {
+    /// ρ, α, β and v, ω against time on linked axes, with the instant
+    /// shown; the area they took.
+    pub(super) fn plots(&self, ui: &mut egui::Ui, t: &Trajectory, width: f32) -> egui::Rect {
         let series = |f: &dyn Fn(&Sample) -> f64| -> PlotPoints<'static> {
             t.samples.iter().map(|s| [s.t, f(s)]).collect()
         };
         let base = ui.scope_id();
         let link = base.with("plots-link");
-        let cursor = self.cursor;
+        let now = self.time();
         let top = ui.cursor().min;
         let plot = |id: &str, y_label: &str| {
             Plot::new(base.with(id))
@@ -75,7 +69,7 @@ impl Playground {
                 series(&|s| s.polar.alpha),
                 series(&|s| s.polar.beta),
             ];
-            series_lines(plot, polar.into_iter().zip(values).collect(), Some(cursor));
+            series_lines(plot, polar.into_iter().zip(values).collect(), Some(now));
         });
         series_legend(ui, &polar, &[("now", REFERENCE)]);
         let command = ["v (m/s)", "ω (rad/s)"];
@@ -83,74 +77,82 @@ impl Playground {
             .x_axis_label("t (s)")
             .show(ui, |plot| {
                 let values = [series(&|s| s.v), series(&|s| s.omega)];
-                series_lines(
-                    plot,
-                    command.into_iter().zip(values).collect(),
-                    Some(cursor),
-                );
+                series_lines(plot, command.into_iter().zip(values).collect(), Some(now));
             });
         series_legend(ui, &command, &[("now", REFERENCE)]);
-        let area = egui::Rect::from_min_max(top, egui::pos2(top.x + width, ui.cursor().min.y));
-        if ui.button("Save plots as PNG").clicked() {
-            self.request_capture(ui, area);
-        }
+        egui::Rect::from_min_max(top, egui::pos2(top.x + width, ui.cursor().min.y))
     }
 
-    fn request_capture(&mut self, ui: &egui::Ui, area: egui::Rect) {
-        let slot: CaptureSlot = Arc::default();
-        let fill = slot.clone();
-        let ctx = ui.ctx().clone();
-        ui.ctx()
-            .send_viewport_cmd(egui::ViewportCommand::Screenshot(
-                egui::ScreenshotCallback::new(move |image| {
-                    if let Ok(mut s) = fill.lock() {
-                        *s = Some(image);
-                    }
-                    ctx.request_repaint();
-                }),
-            ));
-        self.capture = Some((area, slot));
-        self.status = Some("Capturing the plots…".into());
-    }
-
-    /// Finish a requested capture once the image has arrived.
-    pub(super) fn finish_capture(&mut self, ui: &egui::Ui) {
-        let Some((rect, slot)) = &self.capture else {
-            return;
+    /// The bar under runs: `area` as a PNG, `runs` as CSV, and the run on
+    /// screen as its run file.
+    pub(super) fn exports(
+        &self,
+        ui: &mut egui::Ui,
+        area: egui::Rect,
+        runs: &[(&str, &Trajectory)],
+    ) {
+        let table = || csv(runs);
+        let shown = self.shown_run();
+        let (file, command) = match shown {
+            Some((name, _, _)) => (name, format!("kinolab simulate {name}")),
+            None => ("playground.run.json", String::new()),
         };
-        let Some(image) = slot.lock().ok().and_then(|mut s| s.take()) else {
-            return;
+        let make = || match &shown {
+            Some((_, text, _)) => pretty(text),
+            None => Err("these settings make no run".into()),
         };
-        let name = "kinolab-controller-plots.png";
-        self.status = Some(match png_of(&image, *rect, ui.ctx().pixels_per_point()) {
-            Ok(png) => {
-                request_save(ui.ctx(), name, "image/png", png);
-                format!("Saved {name}.")
-            }
-            Err(e) => format!("Could not save the plots: {e}."),
-        });
-        self.capture = None;
+        export::bar(
+            ui,
+            ui.scope_id().with("playground-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-controller.png",
+                    rect: area,
+                },
+                Export::Csv {
+                    file: "kinolab-run.csv",
+                    make: &table,
+                },
+                Export::Run {
+                    file,
+                    command: &command,
+                    make: &make,
+                },
+            ],
+        );
     }
 
-    pub(super) fn exports(&mut self, ui: &mut egui::Ui, runs: &[(&str, &Trajectory)]) {
-        ui.horizontal_wrapped(|ui| {
-            if ui.button("Copy CSV").clicked() {
-                ui.ctx().copy_text(csv(runs));
-                self.status = Some("Copied the run as CSV.".into());
-            }
-            if ui.button("Save CSV").clicked() {
-                request_save(
-                    ui.ctx(),
-                    "kinolab-run.csv",
-                    "text/csv",
-                    csv(runs).into_bytes(),
-                );
-                self.status = Some("Saved kinolab-run.csv.".into());
-            }
-            // Kept even when empty, so the layout does not jump.
-            ui.label(RichText::new(self.status.clone().unwrap_or_default()).small());
-        });
+    /// The bar under many starts: the floor as a PNG, and the runs' file
+    /// with the `kinolab batch` command that repeats them.
+    pub(super) fn many_exports(&self, ui: &mut egui::Ui, area: egui::Rect) {
+        let file = "many-starts.run.json";
+        let command = format!("kinolab {}", self.set.many_args(file).join(" "));
+        let make = || pretty(&self.set.many_file());
+        export::bar(
+            ui,
+            ui.scope_id().with("playground-many-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-many-starts.png",
+                    rect: area,
+                },
+                Export::Run {
+                    file,
+                    command: &command,
+                    make: &make,
+                },
+            ],
+        );
     }
+}
+
+/// The bar under a picture with nothing else to take away.
+pub(super) fn picture_export(ui: &mut egui::Ui, area: egui::Rect, file: &str) {
+    export::bar(
+        ui,
+        ui.scope_id().with("playground-picture-exports"),
+        &[Export::Png { file, rect: area }],
+    );
 }
 
 #[cfg(test)]

@@ -6,7 +6,8 @@ use egui::{Painter, Sense};
 use kinolab_common::angle::snap;
 use kinolab_control::Pose;
 
-use super::Playground;
+use super::settings::pose;
+use super::{NAME, Playground};
 use crate::control::field;
 use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, canvas, handle};
@@ -72,11 +73,12 @@ impl Playground {
         let name = if start { "Start" } else { "Goal" };
         let mut held = false;
         for part in [Part::Heading, Part::Place] {
-            let pose = if start { self.set.start } else { self.set.goal };
+            let now = if start { self.set.start } else { self.set.goal };
+            let p = pose(now);
             let (at, label) = match part {
-                Part::Place => (view.to_screen([pose.x, pose.y]), format!("{name} position")),
+                Part::Place => (view.to_screen([p.x, p.y]), format!("{name} position")),
                 Part::Heading => (
-                    view.to_screen(field::heading_tip(&pose)),
+                    view.to_screen(field::heading_tip(&p)),
                     format!("{name} heading"),
                 ),
             };
@@ -84,14 +86,18 @@ impl Playground {
             held |= h.held();
             if h.dragged() {
                 let to = h.response.interact_pointer_pos().unwrap_or(at + h.moved);
-                let moved = drag_pose(pose, part, view.to_world(to));
-                if start {
-                    self.set.start = moved;
+                let moved = drag_pose(now, part, view.to_world(to));
+                let mut next = self.set.clone();
+                *(if start {
+                    &mut next.start
                 } else {
-                    self.set.goal = moved;
+                    &mut next.goal
+                }) = moved;
+                // Only where the schema allows a pose (within ±5 m).
+                if next != self.set && crate::link::check(NAME, &next).is_ok() {
+                    self.set = next;
+                    self.replay_from_start();
                 }
-                self.cursor = 0.0;
-                self.playing = true;
             }
         }
         held
@@ -115,29 +121,27 @@ impl Playground {
             painter,
             &mut labels,
             view,
-            &self.set.goal,
+            &pose(self.set.goal),
             theme::good_color(ui),
             "goal",
             true,
         );
         if start {
             let ink = ui.visuals().text_color().gamma_multiply(0.7);
-            let p = &self.set.start;
+            let p = &pose(self.set.start);
             field::pose(painter, &mut labels, view, p, ink, "start", true);
         }
         labels.draw(painter, &egui::FontId::proportional(theme::TITLE_SIZE));
     }
 }
 
-/// A pose with its place moved to `to` (snapped to 5 cm), or turned to
-/// face `to` (in 5° steps).
-fn drag_pose(pose: Pose, part: Part, to: [f64; 2]) -> Pose {
+/// A pose `x, y, heading_deg` with its place moved to `to` (snapped to
+/// 5 cm), or turned to face `to` (in 5° steps).
+fn drag_pose(pose: [f64; 3], part: Part, to: [f64; 2]) -> [f64; 3] {
+    let [x, y, heading] = pose;
     match part {
-        Part::Place => Pose::new(snap(to[0], 0.05), snap(to[1], 0.05), pose.theta),
-        Part::Heading => {
-            let heading = snap((to[1] - pose.y).atan2(to[0] - pose.x).to_degrees(), 5.0);
-            Pose::new(pose.x, pose.y, heading.to_radians())
-        }
+        Part::Place => [snap(to[0], 0.05), snap(to[1], 0.05), heading],
+        Part::Heading => [x, y, snap((to[1] - y).atan2(to[0] - x).to_degrees(), 5.0)],
     }
 }
 
@@ -147,10 +151,10 @@ mod tests {
 
     #[test]
     fn dragging_snaps_places_and_headings() {
-        let p = Pose::new(0.0, 0.0, 0.0);
-        let moved = drag_pose(p, Part::Place, [0.123, -0.26]);
+        let p = [0.0, 0.0, 0.0];
+        let moved = pose(drag_pose(p, Part::Place, [0.123, -0.26]));
         assert!((moved.x - 0.1).abs() < 1e-12 && (moved.y + 0.25).abs() < 1e-12);
-        let turned = drag_pose(p, Part::Heading, [0.0, 1.0]);
+        let turned = pose(drag_pose(p, Part::Heading, [0.0, 1.0]));
         assert!((turned.theta - std::f64::consts::FRAC_PI_2).abs() < 1e-12 && turned.x == 0.0);
     }
 }

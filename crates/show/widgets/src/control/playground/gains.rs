@@ -7,8 +7,9 @@ use kinolab_common::angle::snap;
 use kinolab_common::display::fixed;
 use kinolab_control::{Direction, Gains};
 
-use super::Playground;
+use super::{NAME, Playground};
 use crate::theme;
+use crate::widget::range;
 
 fn slider(
     ui: &mut egui::Ui,
@@ -37,13 +38,18 @@ fn direction_name(d: Direction) -> &'static str {
 const A_MAX: f64 = 20.0;
 const B_MIN: f64 = -10.0;
 
+/// The gain sliders' spans: the textbook's neighbourhood, well inside the
+/// schema's ±100 (a lesson or a link may set gains beyond them).
+const SPANS: [(f64, f64); 3] = [(-2.0, 10.0), (-5.0, A_MAX), (B_MIN, 5.0)];
+
 impl Playground {
     pub(super) fn gain_sliders(&mut self, ui: &mut egui::Ui) {
         crate::widget::control_row(ui, |ui| {
             let g = &mut self.set.gains;
-            slider(ui, &mut g[0], -2.0..=10.0, "k_ρ", 1);
-            slider(ui, &mut g[1], -5.0..=20.0, "k_α", 1);
-            slider(ui, &mut g[2], -10.0..=5.0, "k_β", 1);
+            for ((value, (low, high)), name) in g.iter_mut().zip(SPANS).zip(["k_ρ", "k_α", "k_β"])
+            {
+                slider(ui, value, low..=high, name, 1);
+            }
             // Labelled, so a screen reader names it too.
             egui::ComboBox::new(ui.scope_id().with("direction"), "driving direction")
                 .selected_text(direction_name(self.set.direction))
@@ -82,11 +88,12 @@ impl Playground {
             .default_open(open)
             .show(ui, |ui| {
                 crate::widget::control_row(ui, |ui| {
-                    slider(ui, &mut s.slip, 0.0..=0.5, "slip", 2);
-                    slider(ui, &mut s.push, 0.0..=0.2, "push (m/s)", 2);
+                    slider(ui, &mut s.slip, range(NAME, "slip"), "slip", 2);
+                    slider(ui, &mut s.push, range(NAME, "push"), "push (m/s)", 2);
+                    let seeds = range(NAME, "seed");
                     ui.add(
                         egui::DragValue::new(&mut s.seed)
-                            .range(0..=999_999)
+                            .range(*seeds.start() as u64..=*seeds.end() as u64)
                             .prefix("seed "),
                     );
                     if ui.button("new seed").clicked() {
@@ -94,16 +101,17 @@ impl Playground {
                     }
                 });
                 crate::widget::control_row(ui, |ui| {
-                    slider(ui, &mut s.control_rate, 0.0..=100.0, "control rate (Hz)", 0)
-                        .on_hover_text("0 means the controller acts continuously");
-                    slider(
-                        ui,
-                        &mut s.max_wheel_speed,
-                        0.0..=60.0,
-                        "wheel limit (rad/s)",
-                        0,
+                    let rate = range(NAME, "control-rate");
+                    ui.add(
+                        egui::Slider::new(&mut s.control_rate, rate)
+                            .text("control rate (Hz)")
+                            .logarithmic(true)
+                            .fixed_decimals(0),
                     )
-                    .on_hover_text("0 means the wheels have no speed limit");
+                    .on_hover_text("0 means the controller acts continuously");
+                    let limit = range(NAME, "max-wheel-speed");
+                    slider(ui, &mut s.max_wheel_speed, limit, "wheel limit (rad/s)", 0)
+                        .on_hover_text("0 means the wheels have no speed limit");
                 });
             });
     }
@@ -113,6 +121,7 @@ impl Playground {
         let width = ui.available_width().min(900.0);
         let mut picked = None;
         let (good, accent) = (theme::good_color(ui), theme::accent(ui));
+        let top = ui.cursor().min;
         Plot::new(ui.scope_id().with("gain-plane"))
             .width(width)
             .height(300.0)
@@ -149,9 +158,11 @@ impl Playground {
                 ("your gains", accent),
             ],
         );
+        let area = egui::Rect::from_min_max(top, egui::pos2(top.x + width, ui.cursor().min.y));
+        super::export::picture_export(ui, area, "kinolab-gain-plane.png");
         if let Some([a, b]) = picked {
-            self.set.gains[1] = a.clamp(-5.0, 20.0);
-            self.set.gains[2] = b.clamp(-10.0, 5.0);
+            self.set.gains[1] = a.clamp(SPANS[1].0, SPANS[1].1);
+            self.set.gains[2] = b.clamp(SPANS[2].0, SPANS[2].1);
         }
         ui.label(
             RichText::new(format!(

@@ -1,46 +1,49 @@
 //! The controller playground: the polar go-to-pose controller on a
 //! differential drive. Drag start and goal, set gains, see the path, the
-//! robot, and ρ, α, β, v, ω over time; many starts at once; open loop
-//! against closed loop under the same slip; the stability region.
+//! robot, and ρ, α, β, v, ω over time, played by the one player; many
+//! starts at once; open loop against closed loop under the same slip; the
+//! stability region.
 //!
 //! - this file: the state, the constructor, the tabs and the link;
-//! - [`settings`]: what the learner sets, and the runs it gives;
+//! - [`settings`]: what the learner sets, the run files and the runs;
+//! - [`playback`]: the runs on screen as the player plays them;
 //! - [`floor`]: the floor with its draggable poses;
 //! - [`tabs`]: one run, many starts, open against closed loop;
 //! - [`gains`]: the gain sliders, the gain plane and the conditions;
-//! - [`export`]: plots, CSV and PNG;
+//! - [`export`]: plots, and what the export bar offers;
 //! - [`exercise`]: the graded tasks.
 
 mod exercise;
 mod export;
 mod floor;
 mod gains;
+mod playback;
 mod settings;
 mod tabs;
 
 use kinolab_common::Feedback;
 use kinolab_control::exercise::Task;
-use kinolab_control::{Direction, Plan, Pose, Trajectory};
+use kinolab_control::{Plan, Trajectory};
 
 use crate::draw::PlaneView;
-use crate::link;
-use crate::widget::{LabWidget, Params, triple};
-use settings::{LinkState, Settings};
+use crate::link::{self, Moment};
+use crate::player::Player;
+use crate::widget::{LabWidget, Params, SavedRun};
+use playback::Shown;
+use settings::{Legacy, Settings, View};
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Tab {
-    Run,
-    Many,
-    OpenVsClosed,
-    Gains,
-}
+/// The widget's name in the schema.
+const NAME: &str = "controller-playground";
 
-const TABS: [(Tab, &str, &str); 4] = [
-    (Tab::Run, "run", "One run"),
-    (Tab::Many, "many", "Many starts"),
-    (Tab::OpenVsClosed, "open-vs-closed", "Open vs closed loop"),
-    (Tab::Gains, "gains", "Gain region"),
+const TABS: [(View, &str); 4] = [
+    (View::Run, "One run"),
+    (View::Many, "Many starts"),
+    (View::OpenVsClosed, "Open vs closed loop"),
+    (View::Gains, "Gain region"),
 ];
+
+/// The most samples the player runs on in one frame.
+const MOST_PER_FRAME: usize = 100;
 
 /// What the learner is asked to do, and how it went.
 struct Exercise {
@@ -53,120 +56,190 @@ struct Exercise {
 type Comparison = (Plan, Trajectory, Trajectory);
 
 struct Playground {
-    tab: Tab,
     set: Settings,
     initial: Settings,
-    initial_tab: Tab,
+    /// The settings the runs below were computed for.
     computed: Option<Settings>,
     run: Option<Result<Trajectory, String>>,
     many: Option<Result<Vec<Trajectory>, String>>,
     compare: Option<Result<Comparison, String>>,
-    /// Playback time, s, and whether it advances.
-    cursor: f64,
-    playing: bool,
+    /// The player of the runs on screen (one run, or open and closed).
+    player: Option<Player<Shown>>,
+    /// The instant and whether it plays, for the next player made.
+    resume: Option<(f64, bool)>,
     /// The view kept while the learner drags on the floor, so it does not
     /// slide away under the pointer.
     frozen: Option<PlaneView>,
     exercise: Option<Exercise>,
-    /// A requested capture of the plots.
-    capture: Option<export::Capture>,
-    status: Option<String>,
-}
-
-fn pose_of(p: &Params, name: &str) -> Pose {
-    let [x, y, heading] = triple(p, name);
-    Pose::new(x, y, heading.to_radians())
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let tab = TABS
-        .iter()
-        .find(|(_, key, _)| Some(*key) == p.choice("view"))
-        .map_or(Tab::Run, |(t, _, _)| *t);
-    let set = Settings {
-        start: pose_of(p, "start"),
-        goal: pose_of(p, "goal"),
-        gains: triple(p, "gains"),
-        direction: match p.choice("direction") {
-            Some("forward") => Direction::Forward,
-            Some("backward") => Direction::Backward,
-            _ => Direction::Auto,
-        },
-        slip: p.number("slip").unwrap_or_default(),
-        push: p.number("push").unwrap_or_default(),
-        seed: p.integer("seed").unwrap_or(1).max(0) as u64,
-        control_rate: p.number("control-rate").unwrap_or_default(),
-        max_wheel_speed: p.number("max-wheel-speed").unwrap_or_default(),
-        plan: p.text("plan").unwrap_or("line 1").to_owned(),
-        many_count: 24,
-        many_heading_deg: 0.0,
-    };
-    let exercise = exercise::from_params(p, &set)?;
-    Ok(Box::new(Playground {
-        tab,
-        initial: set.clone(),
-        initial_tab: tab,
-        set,
-        computed: None,
-        run: None,
-        many: None,
-        compare: None,
-        cursor: 0.0,
-        playing: true,
-        frozen: None,
-        exercise,
-        capture: None,
-        status: None,
-    }))
+    let set: Settings = p.settings()?;
+    Ok(Box::new(Playground::new(set)?))
 }
 
 impl Playground {
-    /// Recompute what the visible tab shows, once per change.
+    fn new(set: Settings) -> Result<Self, String> {
+        let mut playground = Playground {
+            exercise: exercise::from_settings(&set)?,
+            initial: set.clone(),
+            set,
+            computed: None,
+            run: None,
+            many: None,
+            compare: None,
+            player: None,
+            resume: None,
+            frozen: None,
+        };
+        // The marks live in the exercise from here on.
+        playground.set.marked = None;
+        playground.refresh();
+        Ok(playground)
+    }
+
+    /// What the runs depend on (not the tab, nor the marks).
+    fn key(&self) -> Settings {
+        Settings {
+            view: View::Run,
+            marked: None,
+            ..self.set.clone()
+        }
+    }
+
+    /// Recompute what the visible tab shows, once per change; a changed
+    /// run keeps the instant shown.
     fn refresh(&mut self) {
-        if self.computed.as_ref() != Some(&self.set) {
-            self.computed = Some(self.set.clone());
+        let key = self.key();
+        if self.computed.as_ref() != Some(&key) {
+            if let Some(p) = &self.player
+                && self.resume.is_none()
+            {
+                self.resume = Some((p.time(), p.playing));
+            }
+            self.computed = Some(key);
             self.run = None;
             self.many = None;
             self.compare = None;
+            self.player = None;
             if let Some(ex) = &mut self.exercise {
                 ex.feedback = None;
             }
         }
-        match self.tab {
-            Tab::Run if self.run.is_none() => self.run = Some(self.set.run()),
-            Tab::Many if self.many.is_none() => self.many = Some(self.set.many()),
-            Tab::OpenVsClosed if self.compare.is_none() => self.compare = Some(self.set.compare()),
+        match self.set.view {
+            View::Run if self.run.is_none() => self.run = Some(self.set.run()),
+            View::Many if self.many.is_none() => self.many = Some(self.set.many()),
+            View::OpenVsClosed if self.compare.is_none() => {
+                self.compare = Some(self.set.compare());
+            }
             _ => {}
         }
+        if self.player.is_none() {
+            self.make_player();
+        }
+    }
+
+    /// A player for the runs the tab shows.
+    fn make_player(&mut self) {
+        let runs = match self.set.view {
+            View::Run => self
+                .run
+                .as_ref()
+                .and_then(|r| r.as_ref().ok())
+                .map(|t| vec![t.clone()]),
+            View::OpenVsClosed => self
+                .compare
+                .as_ref()
+                .and_then(|c| c.as_ref().ok())
+                .map(|(_, open, closed)| vec![open.clone(), closed.clone()]),
+            View::Many | View::Gains => None,
+        };
+        if let Some(runs) = runs {
+            let mut player = Player::new(Shown::new(runs));
+            if let Some((t, playing)) = self.resume.take() {
+                player.seek_time(t);
+                player.playing = playing;
+            }
+            self.player = Some(player);
+        }
+    }
+
+    /// Show `view`, its runs from the start, playing.
+    fn show(&mut self, view: View) {
+        if self.set.view != view {
+            self.set.view = view;
+            self.player = None;
+            self.resume = Some((0.0, true));
+        }
+    }
+
+    /// The runs again from the start, playing (after a drag).
+    fn replay_from_start(&mut self) {
+        self.resume = Some((0.0, true));
+    }
+
+    /// The instant shown, s.
+    fn time(&self) -> f64 {
+        self.player.as_ref().map_or(0.0, Player::time)
     }
 
     fn tab_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
-            for (tab, _, label) in TABS {
-                if ui.selectable_label(self.tab == tab, label).clicked() && self.tab != tab {
-                    self.tab = tab;
-                    self.cursor = 0.0;
-                    self.playing = true;
+            for (view, label) in TABS {
+                if ui.selectable_label(self.set.view == view, label).clicked() {
+                    self.show(view);
                 }
             }
         });
+    }
+
+    /// The settings as the learner has them, with the marks of the task.
+    fn settings(&self) -> Settings {
+        let mut s = self.set.clone();
+        if let Some(ex) = &self.exercise
+            && matches!(ex.task, Task::SpotUnstable { .. })
+        {
+            let marked: Vec<f64> = (1..=ex.marks.len())
+                .zip(&ex.marks)
+                .filter(|(_, m)| **m)
+                .map(|(n, _)| n as f64)
+                .collect();
+            s.marked = (!marked.is_empty()).then_some(marked);
+        }
+        s
+    }
+
+    /// The run on screen as the command line reproduces it: its file's
+    /// name, the file, and the samples shown (to the instant).
+    fn shown_run(&self) -> Option<(&'static str, serde_json::Value, &Trajectory)> {
+        match self.set.view {
+            View::Run => {
+                let t = self.run.as_ref()?.as_ref().ok()?;
+                Some(("playground.run.json", self.set.run_file(), t))
+            }
+            View::OpenVsClosed => {
+                let (_, open, _) = self.compare.as_ref()?.as_ref().ok()?;
+                let (file, _) = self.set.open_file().ok()?;
+                Some(("open-loop.run.json", file, open))
+            }
+            View::Many | View::Gains => None,
+        }
     }
 }
 
 impl LabWidget for Playground {
     fn ui(&mut self, ui: &mut egui::Ui) {
-        self.finish_capture(ui);
         self.tab_bar(ui);
         self.gain_sliders(ui);
         self.stability_line(ui);
         self.effects(ui);
         let before = self.set.clone();
         self.refresh();
-        match self.tab {
-            Tab::Run => self.run_tab(ui),
-            Tab::Many => self.many_tab(ui),
-            Tab::OpenVsClosed => self.compare_tab(ui),
-            Tab::Gains => self.gains_tab(ui),
+        match self.set.view {
+            View::Run => self.run_tab(ui),
+            View::Many => self.many_tab(ui),
+            View::OpenVsClosed => self.compare_tab(ui),
+            View::Gains => self.gains_tab(ui),
         }
         self.exercise_ui(ui);
         if self.set != before {
@@ -175,53 +248,61 @@ impl LabWidget for Playground {
     }
 
     fn state(&self) -> Option<String> {
-        (self.set != self.initial || self.tab != self.initial_tab)
-            .then(|| link::encode(&LinkState::of(&self.set, self.tab)))
-            .flatten()
+        let moment = self.player.as_ref().map(Player::moment).unwrap_or_default();
+        link::write(NAME, &self.settings(), &self.initial, &moment)
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some((set, tab)) = link::decode::<LinkState>(state).and_then(LinkState::settings) {
-            self.set = set;
-            self.tab = tab;
+        let (settings, moment) = match link::read::<Settings, ()>(NAME, state) {
+            Ok(read) => read,
+            Err(why) => match link::decode::<Legacy>(state).and_then(|l| l.settings(&self.initial))
+            {
+                Some(old) => (old, Moment::default()),
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        let initial = self.initial.clone();
+        // A task to reach the goal keeps the lesson's start and goal.
+        let exercise = exercise::from_settings(&Settings {
+            start: initial.start,
+            goal: initial.goal,
+            ..settings.clone()
+        })?;
+        *self = Playground::new(settings)?;
+        (self.initial, self.exercise) = (initial, exercise);
+        if let Some(player) = &mut self.player {
+            player.replay(&moment.events, moment.instant);
         }
         Ok(())
+    }
+
+    fn seek(&mut self, t: f64) {
+        if let Some(player) = &mut self.player {
+            player.seek_time(t);
+        }
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        let k = self.player.as_ref()?.cursor();
+        let (name, file, t) = self.shown_run()?;
+        let spec = settings::spec(&file).ok()?;
+        let report = kinolab_control::report::simulation(&spec, t);
+        let shown = report
+            .samples
+            .get(..=k.min(report.samples.len().checked_sub(1)?))?;
+        Some(SavedRun {
+            file: name.into(),
+            text: settings::pretty(&file).ok()?,
+            args: vec!["simulate".into(), name.into()],
+            shows: vec![(
+                "/samples".into(),
+                kinolab_common::display::tidy_report(&shown).ok()?,
+            )],
+        })
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::registry::{create as build, spec};
-
-    #[test]
-    fn lesson_parameters_reach_the_settings() {
-        let block = spec(
-            "controller-playground",
-            &[
-                ("view", "many"),
-                ("gains", "3, 9, -2"),
-                ("slip", "0.1"),
-                ("start", "-1, 0.5, 90"),
-            ],
-        );
-        assert!(build(&block).is_ok());
-        let Ok(p) = kinolab_schema::validate(&block) else {
-            panic!()
-        };
-        let s = pose_of(&p, "start");
-        assert!((s.theta - std::f64::consts::FRAC_PI_2).abs() < 1e-15 && s.x == -1.0);
-        for (k, v) in [
-            ("view", "sideways"),
-            ("plan", "jump 2"),
-            ("task", "dance"),
-            ("slip", "2"),
-            ("start", "1,2"),
-        ] {
-            assert!(
-                build(&spec("controller-playground", &[(k, v)])).is_err(),
-                "{k}: {v}"
-            );
-        }
-    }
-}
+mod tests;

@@ -7,6 +7,7 @@ use kinolab_control::{Pose, Sample, Trajectory};
 
 use super::Playground;
 use super::floor::Grabs;
+use super::settings::pose;
 use crate::control::field;
 use crate::draw::labels::Labels;
 use crate::theme;
@@ -14,7 +15,8 @@ use crate::theme;
 impl Playground {
     pub(super) fn run_tab(&mut self, ui: &mut egui::Ui) {
         let width = ui.available_width().min(900.0);
-        let keep = [self.set.start, self.set.goal];
+        let top = ui.cursor().min;
+        let keep = [pose(self.set.start), pose(self.set.goal)];
         let (painter, view) = self.floor(ui, vec2(width, 320.0), Grabs::StartAndGoal, &keep);
         let Some(run) = self.run.clone() else {
             self.draw_ends(ui, &painter, &view, true, None);
@@ -30,7 +32,7 @@ impl Playground {
         };
         let accent = theme::accent(ui);
         field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
-        // Ghosts every second, then the robot at the cursor.
+        // Ghosts every second, then the robot at the instant shown.
         let ghost = ui.visuals().text_color().gamma_multiply(0.15);
         for s in t
             .samples
@@ -39,7 +41,7 @@ impl Playground {
         {
             field::robot(&painter, &view, &s.pose, ghost);
         }
-        let now = field::at_time(&t.samples, self.cursor).map(|s| s.pose);
+        let now = field::at_time(&t.samples, self.time()).map(|s| s.pose);
         if let Some(pose) = &now {
             field::robot(&painter, &view, pose, accent);
         }
@@ -48,62 +50,65 @@ impl Playground {
         ui.label(
             RichText::new("Drag the dots to move start and goal, the rings to turn them.").small(),
         );
-        self.playback(ui, t.samples.last().map_or(0.0, |s| s.t));
+        self.player_ui(ui, t.samples.len());
         let text = RichText::new(summary(&t));
         ui.label(if t.diverged.is_some() {
             text.color(theme::error_color(ui))
         } else {
             text
         });
-        self.plots(ui, &t, width);
-        self.exports(ui, &[("closed", &t)]);
+        let plots = self.plots(ui, &t, width);
+        self.exports(
+            ui,
+            egui::Rect::from_min_max(top, plots.max),
+            &[("closed", &t)],
+        );
     }
 
-    /// Play, pause and scrub through a run.
-    pub(super) fn playback(&mut self, ui: &mut egui::Ui, end: f64) {
-        if self.playing {
-            self.cursor += crate::widget::frame_dt(ui);
-            if self.cursor >= end {
-                self.cursor = end;
-                self.playing = false;
-            } else {
-                crate::widget::animate(ui);
-            }
-        }
-        ui.horizontal(|ui| {
-            let label = if self.playing { "Pause" } else { "Play" };
-            if ui.button(label).clicked() {
-                if !self.playing && self.cursor >= end {
-                    self.cursor = 0.0;
-                }
-                self.playing = !self.playing;
-            }
-            ui.add(
-                egui::Slider::new(&mut self.cursor, 0.0..=end)
-                    .text("t (s)")
-                    .fixed_decimals(2),
-            );
-        });
+    /// The player of the runs on screen: its buttons, the time, the scrub
+    /// bar (`samples` long), and playing on.
+    pub(super) fn player_ui(&mut self, ui: &mut egui::Ui, samples: usize) {
+        let Some(player) = &mut self.player else {
+            return;
+        };
+        player.controls(ui);
+        player.timeline(
+            ui,
+            "Time in the run",
+            samples.saturating_sub(1),
+            &mut |_, _, _, _| {},
+        );
+        player.run(ui, super::MOST_PER_FRAME);
     }
 
     pub(super) fn many_tab(&mut self, ui: &mut egui::Ui) {
         crate::widget::control_row(ui, |ui| {
+            let count = crate::widget::range(super::NAME, "starts");
             ui.add(
-                egui::Slider::new(&mut self.set.many_count, 4..=100).text("starts on a 1 m circle"),
+                egui::Slider::new(
+                    &mut self.set.starts,
+                    *count.start() as usize..=*count.end() as usize,
+                )
+                .text("starts on a 1 m circle"),
             );
             ui.add(
-                egui::Slider::new(&mut self.set.many_heading_deg, -180.0..=180.0)
-                    .text("start heading (°)")
-                    .step_by(5.0),
+                egui::Slider::new(
+                    &mut self.set.start_heading,
+                    crate::widget::range(super::NAME, "start-heading"),
+                )
+                .text("start heading (°)")
+                .step_by(5.0),
             );
         });
         let width = ui.available_width().min(900.0);
         // The 1 m circle of starts and a little room.
+        let [gx, gy, _] = self.set.goal;
         let ring: Vec<Pose> = [[-0.6, -0.6], [0.6, 0.6]]
             .iter()
-            .map(|[dx, dy]| Pose::new(self.set.goal.x + dx, self.set.goal.y + dy, 0.0))
+            .map(|[dx, dy]| Pose::new(gx + dx, gy + dy, 0.0))
             .collect();
         let (painter, view) = self.floor(ui, vec2(width, 380.0), Grabs::Goal, &ring);
+        let area = painter.clip_rect();
         let (accent, bad) = (theme::accent(ui), theme::error_color(ui));
         let runs = match self.many.clone() {
             Some(Ok(runs)) => runs,
@@ -139,6 +144,7 @@ impl Playground {
             kinolab_control::batch::PREVIEW_DURATION,
             fixed(slowest, 1)
         ));
+        self.many_exports(ui, area);
     }
 
     pub(super) fn compare_tab(&mut self, ui: &mut egui::Ui) {
@@ -171,16 +177,21 @@ impl Playground {
             })
             .collect();
         let mut keep: Vec<Pose> = nominal.iter().step_by(20).map(|s| s.pose).collect();
-        keep.push(self.set.start);
+        keep.push(pose(self.set.start));
         let runs = [("Open loop", &open), ("Closed loop", &closed)];
+        let top = ui.cursor().min;
         crate::widget::panels(ui, runs.len(), |ui, i, width| {
             let (title, t) = runs[i];
             ui.label(RichText::new(title).strong());
             self.compare_floor(ui, width.min(450.0), &keep, &nominal, &plan.end(), t);
         });
+        let area = egui::Rect::from_min_max(
+            top,
+            egui::pos2(top.x + ui.available_width(), ui.cursor().min.y),
+        );
         ui.label(RichText::new("Grey: the plan as drawn on paper. Both robots meet the same slip and pushes (same seed).").small());
-        self.playback(ui, open.samples.last().map_or(0.0, |s| s.t));
-        self.exports(ui, &[("open", &open), ("closed", &closed)]);
+        self.player_ui(ui, open.samples.len().max(closed.samples.len()));
+        self.exports(ui, area, &[("open", &open), ("closed", &closed)]);
     }
 
     /// One side of the comparison: the plan in grey, the run, the robot.
@@ -209,14 +220,14 @@ impl Playground {
             &painter,
             &mut labels,
             &view,
-            &self.set.start,
+            &pose(self.set.start),
             ink,
             "start",
             true,
         );
         labels.draw(&painter, &egui::FontId::proportional(theme::TITLE_SIZE));
         field::path(&painter, &view, &t.samples, Stroke::new(2.0, accent));
-        if let Some(s) = field::at_time(&t.samples, self.cursor) {
+        if let Some(s) = field::at_time(&t.samples, self.time()) {
             field::robot(&painter, &view, &s.pose, accent);
         }
         ui.label(format!(

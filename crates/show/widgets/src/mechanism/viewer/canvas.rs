@@ -16,7 +16,8 @@ use crate::theme;
 const RING: f32 = 13.0;
 
 impl Viewer {
-    pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
+    /// The drawing; the area it took.
+    pub(super) fn canvas(&mut self, ui: &mut egui::Ui) -> Rect {
         let size = vec2(ui.available_width().min(760.0), 380.0);
         let (response, painter) = canvas_3d(ui, size, Sense::click_and_drag(), &self.camera);
         let rect = response.rect;
@@ -25,7 +26,7 @@ impl Viewer {
             self.camera.handle(ui, &response, true);
         }
         let Ok(placed) = self.model.place(&self.q) else {
-            return;
+            return rect;
         };
         let collisions = (self.shapes || !self.obstacles.is_empty())
             .then(|| {
@@ -39,6 +40,7 @@ impl Viewer {
         self.draw_frames(&painter, rect, &placed);
         self.draw_marks(ui, &painter, rect);
         self.captions(ui, &painter, rect, collisions.as_ref());
+        rect
     }
 
     /// The ring at the end effector (or at the dragged target): drag it and

@@ -20,8 +20,40 @@ use kinolab_mechanism::{FrameRef, JointKind, Model, Obstacle, Vector3, catalogue
 use serde::{Deserialize, Serialize};
 
 use crate::draw::scene3d::{Camera, ViewKind};
-use crate::link;
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
 use crate::widget::{LabWidget, Params};
+
+/// The widget's name in the schema.
+const NAME: &str = "mechanism-viewer";
+
+/// What the lesson sets and a link carries: the schema's parameters (the
+/// joint values, the view and the switches as the learner leaves them).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    model: String,
+    view: Option<String>,
+    /// The driven joints, as people write them (degrees or metres).
+    q: Option<Vec<f64>>,
+    frames: bool,
+    shapes: bool,
+    obstacles: Option<Vec<[f64; 3]>>,
+    drag: bool,
+    tree: bool,
+    task: Option<TaskKind>,
+    target: Option<Vec<f64>>,
+    tolerance: f64,
+    sets: Option<Vec<Vec<f64>>>,
+    /// The configurations marked singular, by number from 1.
+    marked: Option<Vec<f64>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum TaskKind {
+    Reach,
+    SpotSingular,
+}
 
 /// The frame a learner moves, by model: the first one the model has.
 const END_FRAMES: [&str; 5] = [
@@ -63,6 +95,11 @@ struct Viewer {
     exercise: Option<Exercise>,
     file_text: String,
     file_note: Option<String>,
+    /// The settings the viewer opened with (`initial_q` and
+    /// `initial_kind` are their joints and camera), and what the lesson
+    /// set up; both `None` once a model file is loaded.
+    initial: Option<Settings>,
+    lesson: Option<Settings>,
 }
 
 fn planar(id: &str) -> bool {
@@ -85,42 +122,87 @@ fn from_shown(model: &Model, v: usize, value: f64) -> f64 {
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let id = p.choice("model").unwrap_or("planar-2r");
-    let model =
-        catalogue::mechanism(id).map_err(|e| format!("parameter `model`: {}", e.message))?;
-    let kind = match p.choice("view") {
-        Some(v) => ViewKind::parse(v).unwrap_or(ViewKind::Orbit),
-        None if planar(id) => ViewKind::Plan,
-        None if id == "rocker-bogie" => ViewKind::Side,
-        None => ViewKind::Orbit,
-    };
-    let mut viewer = Viewer::new(model, kind);
-    viewer.flat = planar(id);
-    if viewer.flat {
-        let (centre, extent) = bounds::bounds(&viewer.model, &viewer.q, true);
-        viewer.camera = Camera::new(kind, centre, extent);
+    Ok(Box::new(Viewer::from_settings(p.settings()?)?))
+}
+
+/// The camera a model opens with when the lesson names none.
+fn default_view(id: &str) -> ViewKind {
+    match id {
+        _ if planar(id) => ViewKind::Plan,
+        "rocker-bogie" => ViewKind::Side,
+        _ => ViewKind::Orbit,
     }
-    if let Some(values) = p.numbers("q") {
-        viewer
-            .set_driven(values)
-            .map_err(|e| format!("parameter `q`: {e}"))?;
+}
+
+impl Viewer {
+    /// The viewer `settings` set up.
+    fn from_settings(settings: Settings) -> Result<Self, String> {
+        let id = settings.model.as_str();
+        let model =
+            catalogue::mechanism(id).map_err(|e| format!("parameter `model`: {}", e.message))?;
+        let kind = match settings.view.as_deref() {
+            Some(v) => ViewKind::parse(v).unwrap_or(ViewKind::Orbit),
+            None => default_view(id),
+        };
+        let mut viewer = Viewer::new(model, kind);
+        viewer.flat = planar(id);
+        if viewer.flat {
+            let (centre, extent) = bounds::bounds(&viewer.model, &viewer.q, true);
+            viewer.camera = Camera::new(kind, centre, extent);
+        }
+        if let Some(values) = &settings.q {
+            viewer
+                .set_driven(values)
+                .map_err(|e| format!("parameter `q`: {e}"))?;
+        }
+        viewer.initial_q = viewer.q.clone();
+        viewer.frames = settings.frames;
+        viewer.shapes = settings.shapes;
+        viewer.drag = settings.drag;
+        viewer.tree = settings.tree;
+        viewer.obstacles = settings
+            .obstacles
+            .iter()
+            .flatten()
+            .map(|[x, y, r]| Obstacle::Circle {
+                center: [*x, *y],
+                radius: r.abs(),
+            })
+            .collect();
+        viewer.exercise = viewer.exercise_from(&settings)?;
+        viewer.initial = Some(settings.clone());
+        viewer.lesson = Some(settings);
+        Ok(viewer)
     }
-    viewer.initial_q = viewer.q.clone();
-    viewer.frames = p.yes("frames");
-    viewer.shapes = p.yes("shapes");
-    viewer.drag = p.yes("drag");
-    viewer.tree = p.yes("tree");
-    viewer.obstacles = p
-        .groups("obstacles")
-        .unwrap_or_default()
-        .iter()
-        .map(|g| Obstacle::Circle {
-            center: [g[0], g[1]],
-            radius: g[2].abs(),
-        })
-        .collect();
-    viewer.exercise = viewer.exercise_from(p)?;
-    Ok(Box::new(viewer))
+
+    /// The settings as the learner has them now; `None` for a model loaded
+    /// from a file (a link cannot carry it).
+    fn settings(&self) -> Option<Settings> {
+        let mut s = self.initial.clone()?;
+        if self.camera.kind != self.initial_kind {
+            s.view = Some(self.camera.kind.key().to_owned());
+        }
+        if self.q != self.initial_q {
+            s.q = Some(
+                self.driven
+                    .iter()
+                    .map(|&v| to_shown(&self.model, v, self.q[v]))
+                    .collect(),
+            );
+        }
+        (s.frames, s.shapes, s.drag, s.tree) = (self.frames, self.shapes, self.drag, self.tree);
+        if let Some(ex) = &self.exercise
+            && matches!(ex.task, Task::SpotSingular { .. })
+        {
+            let marked: Vec<f64> = (1..=ex.marks.len())
+                .zip(&ex.marks)
+                .filter(|(_, m)| **m)
+                .map(|(n, _)| n as f64)
+                .collect();
+            s.marked = (!marked.is_empty()).then_some(marked);
+        }
+        Some(s)
+    }
 }
 
 impl Viewer {
@@ -154,32 +236,31 @@ impl Viewer {
             file_text: String::new(),
             file_note: None,
             flat: false,
+            initial: None,
+            lesson: None,
             model,
         }
     }
 
     /// The exercise a lesson set up, if any.
-    fn exercise_from(&self, p: &Params) -> Result<Option<Exercise>, String> {
+    fn exercise_from(&self, settings: &Settings) -> Result<Option<Exercise>, String> {
         let frame = self
             .end
             .as_ref()
             .map_or_else(|| "tool".to_owned(), |(n, _)| n.clone());
-        let task = match p.choice("task") {
-            Some("reach") => {
-                let t = p.numbers("target").unwrap_or_default();
+        let task = match settings.task {
+            Some(TaskKind::Reach) => {
+                let t = settings.target.clone().unwrap_or_default();
+                let at = |k: usize| t.get(k).copied().unwrap_or(0.0);
                 Task::Reach {
                     frame,
-                    target: Vector3::new(
-                        t.first().copied().unwrap_or(0.0),
-                        t.get(1).copied().unwrap_or(0.0),
-                        t.get(2).copied().unwrap_or(0.0),
-                    ),
-                    tolerance: p.number("tolerance").unwrap_or(0.01),
+                    target: Vector3::new(at(0), at(1), at(2)),
+                    tolerance: settings.tolerance,
                 }
             }
-            Some("spot-singular") => {
+            Some(TaskKind::SpotSingular) => {
                 let mut sets = Vec::new();
-                for values in p.groups("sets").unwrap_or_default() {
+                for values in settings.sets.iter().flatten() {
                     let mut probe = Viewer::new(self.model.clone(), self.camera.kind);
                     probe
                         .set_driven(values)
@@ -188,10 +269,15 @@ impl Viewer {
                 }
                 Task::SpotSingular { frame, sets }
             }
-            _ => return Ok(None),
+            None => return Ok(None),
         };
         let marks = match &task {
-            Task::SpotSingular { sets, .. } => vec![false; sets.len()],
+            Task::SpotSingular { sets, .. } => {
+                let marked = settings.marked.clone().unwrap_or_default();
+                (1..=sets.len())
+                    .map(|n| marked.contains(&(n as f64)))
+                    .collect()
+            }
             _ => Vec::new(),
         };
         Ok(Some(Exercise {
@@ -243,7 +329,7 @@ impl Viewer {
         let kind = self.camera.kind;
         let keep = (self.frames, self.shapes, self.drag, self.tree);
         *self = Viewer::new(model, kind);
-        // A loaded model is flat if nothing in it leaves the x–y plane.
+        // A loaded model (which no link can carry: `initial` stays empty) is flat if nothing in it leaves the x–y plane.
         self.flat = self
             .model
             .joints()
@@ -283,7 +369,8 @@ impl Viewer {
     }
 }
 
-/// The view and the driven joints' values, as a link carries them.
+/// The view and the driven joints' values, as the first format of links
+/// carried them.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 struct LinkState {
     view: u8,
@@ -295,7 +382,15 @@ const VIEWS: [ViewKind; 3] = [ViewKind::Orbit, ViewKind::Plan, ViewKind::Side];
 impl LabWidget for Viewer {
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.toolbar(ui);
-        self.canvas(ui);
+        let drawing = self.canvas(ui);
+        export::bar(
+            ui,
+            ui.scope_id().with("mechanism-exports"),
+            &[Export::Png {
+                file: "kinolab-mechanism.png",
+                rect: drawing,
+            }],
+        );
         self.readout(ui);
         self.sliders(ui);
         self.exercise_ui(ui);
@@ -304,31 +399,41 @@ impl LabWidget for Viewer {
     }
 
     fn state(&self) -> Option<String> {
-        let changed = self.q != self.initial_q || self.camera.kind != self.initial_kind;
-        let state = LinkState {
-            view: VIEWS
-                .iter()
-                .position(|k| *k == self.camera.kind)
-                .unwrap_or(0) as u8,
-            driven: self
-                .driven
-                .iter()
-                .map(|&v| to_shown(&self.model, v, self.q[v]))
-                .collect(),
-        };
-        changed.then(|| link::encode(&state)).flatten()
+        let (now, initial) = (self.settings()?, self.lesson.as_ref()?);
+        link::write(NAME, &now, initial, &Moment::<()>::default())
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        let Some(state) = link::decode::<LinkState>(state) else {
-            return Err("it is not a state of the mechanism viewer".into());
+        let lesson = self
+            .lesson
+            .clone()
+            .ok_or("a model loaded from a file takes no link")?;
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<LinkState>(state) {
+                Some(old) => Settings {
+                    view: VIEWS.get(usize::from(old.view)).map(|k| k.key().to_owned()),
+                    q: Some(old.driven),
+                    ..lesson.clone()
+                },
+                None => return Err(why),
+            },
         };
-        if let Some(kind) = VIEWS.get(usize::from(state.view)) {
-            self.camera = Camera::new(*kind, self.camera.centre, self.camera.extent);
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        let mut viewer = Viewer::from_settings(settings.clone())?;
+        if settings.model == lesson.model {
+            // Home is still where the lesson started.
+            let home = Viewer::from_settings(lesson.clone())?;
+            (viewer.initial_q, viewer.initial_kind) = (home.initial_q, home.initial_kind);
+            viewer.initial = Some(Settings {
+                q: lesson.q.clone(),
+                view: lesson.view.clone(),
+                ..settings
+            });
         }
-        if state.driven.iter().all(|v| v.is_finite()) {
-            let _ = self.set_driven(&state.driven);
-        }
+        viewer.lesson = Some(lesson);
+        *self = viewer;
         Ok(())
     }
 }
@@ -360,12 +465,56 @@ mod tests {
             driven: vec![10.0, -20.0],
         })
         .unwrap_or_default();
-        let _ = w.restore(&side);
-        let Some(back) = w.state().and_then(|s| link::decode::<LinkState>(&s)) else {
+        assert_eq!(w.restore(&side), Ok(()));
+        let state = w.state().unwrap_or_default();
+        let Ok((back, _)) = link::read::<Settings, ()>(NAME, &state) else {
             panic!("a changed viewer goes into the link")
         };
-        assert_eq!(back.view, 2);
-        assert!((back.driven[0] - 10.0).abs() < 1e-9 && (back.driven[1] + 20.0).abs() < 1e-9);
+        assert_eq!(back.view.as_deref(), Some("side"));
+        let q = back.q.unwrap_or_default();
+        assert!((q[0] - 10.0).abs() < 1e-9 && (q[1] + 20.0).abs() < 1e-9);
+        // Out of the schema's range: refused, the lesson's values kept.
+        let bad = link::encode(&LinkState {
+            view: 0,
+            driven: vec![1e9, 0.0],
+        })
+        .unwrap_or_default();
+        let Ok(mut w) = build(&spec(&[("q", "30, 45")])) else {
+            panic!()
+        };
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.state(), None);
+    }
+
+    #[test]
+    fn the_view_switches_and_marks_travel_in_the_link() {
+        let params = [
+            ("model", "planar-2r"),
+            ("task", "spot-singular"),
+            ("sets", "0, 0; 30, 90; 10, 180"),
+        ];
+        let Ok(p) = kinolab_schema::validate(&spec(&params)) else {
+            panic!()
+        };
+        let Ok(mut w) = p.settings().and_then(Viewer::from_settings) else {
+            panic!()
+        };
+        w.shapes = true;
+        if let Some(ex) = &mut w.exercise {
+            ex.marks[2] = true;
+        }
+        w.camera = Camera::new(ViewKind::Orbit, w.camera.centre, w.camera.extent);
+        let text = w.state().unwrap_or_default();
+        let Ok(mut again) = p.settings().and_then(Viewer::from_settings) else {
+            panic!()
+        };
+        assert_eq!(again.restore(&text), Ok(()));
+        assert!(again.shapes);
+        assert_eq!(again.camera.kind, ViewKind::Orbit);
+        assert_eq!(
+            again.exercise.map(|e| e.marks),
+            Some(vec![false, false, true])
+        );
     }
 
     #[test]

@@ -16,7 +16,13 @@ use crate::wheels::chassis::{
 };
 
 impl Workbench {
-    pub(super) fn canvas(&mut self, ui: &mut egui::Ui, analysis: &Analysis, size: egui::Vec2) {
+    /// The drawing; the area it took.
+    pub(super) fn canvas(
+        &mut self,
+        ui: &mut egui::Ui,
+        analysis: &Analysis,
+        size: egui::Vec2,
+    ) -> egui::Rect {
         let (response, painter) = canvas(ui, size, Sense::click());
         let rect = response.rect;
         let view = RobotView::robot_frame(rect, self.extent);
@@ -36,6 +42,7 @@ impl Workbench {
         let clicked = self.wheel_handles(ui, &painter, &mut labels, &view);
         self.select(clicked, response.clicked());
         labels.draw(&painter, &egui::FontId::proportional(theme::LABEL_SIZE));
+        rect
     }
 
     /// Everything under the wheels: grid, frame, zero-motion lines, ICR, goal.
@@ -206,7 +213,7 @@ impl Workbench {
 
     /// A click on a wheel selects it (and marks it in the challenge); a
     /// click on empty ground clears the selection.
-    fn select(&mut self, clicked: Option<usize>, ground_clicked: bool) {
+    pub(super) fn select(&mut self, clicked: Option<usize>, ground_clicked: bool) {
         if let Some(i) = clicked {
             if let Task::FindDisagreeing { chosen, feedback } = &mut self.task {
                 if let Some(k) = chosen.iter().position(|c| *c == i) {

@@ -15,13 +15,70 @@ use kinolab_wheels::challenge::Goal;
 use kinolab_wheels::{Chassis, Wheel, WheelKind};
 use serde::{Deserialize, Serialize};
 
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
 use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
+
+/// The widget's name in the schema.
+const NAME: &str = "wheel-workbench";
 
 /// Positions snap to this grid (metres) and angles to this step (degrees)
 /// while dragging, so wheels can share an axle exactly.
 const GRID: f64 = 0.05;
 const ANGLE_STEP: f64 = 5.0;
+/// How close to the goal ICR counts, m.
+const ICR_TOLERANCE: f64 = 0.05;
+
+/// What the lesson sets and a link carries: the schema's parameters. A
+/// layout the learner changed travels as `layout` (or `robot`, when it is
+/// a catalogue robot as it stands).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+struct Settings {
+    robot: Option<String>,
+    layout: Option<String>,
+    goal_maneuverability: Option<usize>,
+    max_steer_inputs: Option<usize>,
+    goal_icr: Option<[f64; 2]>,
+    goal_mobility: Option<usize>,
+    goal_dof: Option<usize>,
+    find_disagreeing: bool,
+    /// The wheels picked in the challenge, by number from 1.
+    chosen: Option<Vec<f64>>,
+}
+
+impl Settings {
+    fn task(&self) -> Task {
+        if let Some(target) = self.goal_maneuverability {
+            Task::Goal(Goal::Maneuverability {
+                target,
+                max_steer_inputs: self.max_steer_inputs,
+            })
+        } else if let Some(target) = self.goal_mobility {
+            Task::Goal(Goal::Mobility { target })
+        } else if let Some(target) = self.goal_dof {
+            Task::Goal(Goal::Dof { target })
+        } else if let Some([x, y]) = self.goal_icr {
+            Task::Goal(Goal::IcrAt {
+                x,
+                y,
+                tolerance: ICR_TOLERANCE,
+            })
+        } else if self.find_disagreeing {
+            let chosen = self.chosen.clone().unwrap_or_default();
+            Task::FindDisagreeing {
+                chosen: chosen
+                    .iter()
+                    .map(|n| (*n as usize).saturating_sub(1))
+                    .collect(),
+                feedback: None,
+            }
+        } else {
+            Task::None
+        }
+    }
+}
 
 enum Task {
     None,
@@ -33,6 +90,8 @@ enum Task {
 }
 
 pub(super) struct Workbench {
+    /// What the lesson set up.
+    initial: Settings,
     start: Chassis,
     chassis: Chassis,
     selected: Option<usize>,
@@ -48,31 +107,17 @@ pub(super) struct Workbench {
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     let chassis = kinolab_schema::robot_of(p)?;
-    let count = |key: &str| p.integer(key).map(|v| v as usize);
-    let task = if let Some(target) = count("goal-maneuverability") {
-        Task::Goal(Goal::Maneuverability {
-            target,
-            max_steer_inputs: count("max-steer-inputs"),
-        })
-    } else if let Some(target) = count("goal-mobility") {
-        Task::Goal(Goal::Mobility { target })
-    } else if let Some(target) = count("goal-dof") {
-        Task::Goal(Goal::Dof { target })
-    } else if let Some([x, y]) = p.numbers("goal-icr") {
-        Task::Goal(Goal::IcrAt {
-            x: *x,
-            y: *y,
-            tolerance: 0.05,
-        })
-    } else if p.yes("find-disagreeing") {
-        Task::FindDisagreeing {
-            chosen: Vec::new(),
-            feedback: None,
-        }
-    } else {
-        Task::None
+    Ok(Box::new(Workbench::new(chassis, p.settings()?)))
+}
+
+/// The robot that `settings` name, through the schema (which checks them).
+fn robot(settings: &Settings) -> Result<Chassis, String> {
+    let spec = kinolab_lessons::WidgetSpec {
+        name: NAME.to_owned(),
+        params: kinolab_schema::settings::to_params(NAME, settings)?,
+        line: 0,
     };
-    Ok(Box::new(Workbench::new(chassis, task)))
+    kinolab_schema::robot_of(&kinolab_schema::validate(&spec)?)
 }
 
 /// How far the drawing must reach to show every wheel, the point where
@@ -94,10 +139,12 @@ fn extent_for(chassis: &Chassis, task: &Task) -> f64 {
 }
 
 impl Workbench {
-    fn new(chassis: Chassis, task: Task) -> Self {
+    fn new(chassis: Chassis, settings: Settings) -> Self {
+        let task = settings.task();
         let extent = extent_for(&chassis, &task);
         let file_text = chassis.to_json();
         Self {
+            initial: settings,
             start: chassis.clone(),
             chassis,
             selected: None,
@@ -169,9 +216,10 @@ impl LabWidget for Workbench {
         } else {
             vec2(ui.available_width(), 340.0)
         };
+        let mut drawing = egui::Rect::NOTHING;
         if wide {
             ui.horizontal_top(|ui| {
-                self.canvas(ui, &analysis, canvas_size);
+                drawing = self.canvas(ui, &analysis, canvas_size);
                 ui.vertical(|ui| {
                     self.degrees_panel(ui, &analysis);
                     ui.separator();
@@ -179,33 +227,79 @@ impl LabWidget for Workbench {
                 });
             });
         } else {
-            self.canvas(ui, &analysis, canvas_size);
+            drawing = self.canvas(ui, &analysis, canvas_size);
             self.degrees_panel(ui, &analysis);
             self.selected_editor(ui);
         }
         // One line kept for messages, so the layout does not jump.
         let message = self.message.clone().unwrap_or_default();
         ui.label(RichText::new(message).color(theme::error_color(ui)));
+        export::bar(
+            ui,
+            ui.scope_id().with("workbench-exports"),
+            &[Export::Png {
+                file: "kinolab-wheel-layout.png",
+                rect: drawing,
+            }],
+        );
         self.task_ui(ui);
         self.matrices(ui);
         self.file_ui(ui);
     }
 
     fn state(&self) -> Option<String> {
-        (self.chassis != self.start)
-            .then(|| link::encode(&LinkLayout::of(&self.chassis)))
-            .flatten()
+        link::write(
+            NAME,
+            &self.settings(),
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(c) = link::decode::<LinkLayout>(state).and_then(LinkLayout::chassis) {
-            self.load(c);
-        }
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<LinkLayout>(state).and_then(LinkLayout::chassis) {
+                Some(chassis) => Settings {
+                    robot: None,
+                    layout: Some(chassis.to_compact()),
+                    ..self.initial.clone()
+                },
+                None => return Err(why),
+            },
+        };
+        let chassis = robot(&settings)?;
+        let lesson = (self.initial.clone(), self.start.clone());
+        *self = Workbench::new(chassis, settings);
+        (self.initial, self.start) = lesson;
         Ok(())
     }
 }
 
-/// A layout as a link carries it.
+impl Workbench {
+    /// The settings as the learner has them now.
+    fn settings(&self) -> Settings {
+        let mut settings = self.initial.clone();
+        if self.chassis != self.start {
+            let compact = self.chassis.to_compact();
+            let robot = kinolab_wheels::catalogue::CATALOGUE.iter().find(|e| {
+                kinolab_wheels::catalogue::robot(e.id).is_ok_and(|c| c.to_compact() == compact)
+            });
+            (settings.robot, settings.layout) = match robot {
+                Some(e) => (Some(e.id.to_owned()), None),
+                None => (None, Some(compact)),
+            };
+        }
+        if let Task::FindDisagreeing { chosen, .. } = &self.task {
+            let mut numbers: Vec<f64> = chosen.iter().map(|i| (i + 1) as f64).collect();
+            numbers.sort_by(f64::total_cmp);
+            settings.chosen = (!numbers.is_empty()).then_some(numbers);
+        }
+        settings
+    }
+}
+
+/// A layout as the first format of links carries it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 struct LinkLayout {
     name: String,
@@ -227,6 +321,7 @@ struct LinkWheel {
 }
 
 impl LinkLayout {
+    #[cfg(test)]
     fn of(chassis: &Chassis) -> Self {
         let wheels = chassis
             .wheels()
@@ -287,6 +382,13 @@ impl LinkLayout {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::registry::spec;
+
+    fn widget(params: &[(&str, &str)]) -> Workbench {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let chassis = kinolab_schema::robot_of(&p).unwrap_or_else(|e| panic!("{e}"));
+        Workbench::new(chassis, p.settings().unwrap_or_else(|e| panic!("{e}")))
+    }
 
     #[test]
     fn every_catalogue_layout_survives_a_link() {
@@ -297,11 +399,67 @@ mod tests {
             let text = link::encode(&LinkLayout::of(&chassis)).unwrap_or_default();
             let back = link::decode::<LinkLayout>(&text).and_then(LinkLayout::chassis);
             assert_eq!(back.as_ref(), Some(&chassis), "{}", entry.id);
+            // Picked from the toolbar, it travels by its id.
+            let mut w = widget(&[("layout", "f,90,0,0.3,0.1;o,-90,0,0.3,0.05")]);
+            w.load(chassis.clone());
+            let mut again = widget(&[]);
+            assert_eq!(
+                again.restore(&w.state().unwrap_or_default()),
+                Ok(()),
+                "{}",
+                entry.id
+            );
+            assert_eq!(
+                again.chassis.to_compact(),
+                chassis.to_compact(),
+                "{}",
+                entry.id
+            );
         }
         assert!(
             link::decode::<LinkLayout>("a_broken")
                 .and_then(LinkLayout::chassis)
                 .is_none()
         );
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let Ok(tricycle) = kinolab_wheels::catalogue::robot("tricycle") else {
+            panic!("the tricycle is in the catalogue")
+        };
+        let old = link::encode(&LinkLayout::of(&tricycle)).unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(w.chassis.to_compact(), tricycle.to_compact());
+        // A wheel with a radius the core refuses: refused, the lesson's kept.
+        let mut broken = LinkLayout::of(&tricycle);
+        broken.wheels[0].radius = -1.0;
+        let mut w = widget(&[("robot", "three-swedish")]);
+        assert!(
+            w.restore(&link::encode(&broken).unwrap_or_default())
+                .is_err()
+        );
+        assert_eq!(w.chassis.name(), w.start.name());
+    }
+
+    #[test]
+    fn an_edited_layout_and_the_picks_travel_in_the_link() {
+        let stuck = "f,45,45,0.5,0.1;f,-45,135,0.5,0.1;f,135,-45,0.5,0.1;f,-135,-135,0.5,0.1;f,0,20,0.5,0.1";
+        let mut w = widget(&[("layout", stuck), ("find-disagreeing", "yes")]);
+        assert_eq!(w.state(), None);
+        w.select(Some(4), false);
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[("layout", stuck), ("find-disagreeing", "yes")]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert!(matches!(&again.task, Task::FindDisagreeing { chosen, .. } if chosen == &[4]));
+        // A moved wheel travels as a layout.
+        let mut w = widget(&[]);
+        let mut wheels = w.chassis.wheels().to_vec();
+        wheels[2].l = 0.4;
+        assert!(w.try_set(wheels));
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&w.state().unwrap_or_default()), Ok(()));
+        assert_eq!(again.chassis.to_compact(), w.chassis.to_compact());
     }
 }
