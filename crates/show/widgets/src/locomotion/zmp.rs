@@ -277,16 +277,17 @@ impl ZmpCartTable {
         if player.cursor() == 0 {
             return "Press Push (or Play) to give the body the chosen speed.".to_owned();
         }
+        // The run is computed whole when pushed: say how it ends.
         match run.left_foot_at {
-            Some(t) if player.time() >= t => format!(
+            Some(t) => format!(
                 "From t = {} s the ZMP this motion needs lies past the toe. The real ZMP stays on the foot, at the toe, and the body falls forwards.",
                 fixed(t, 2)
             ),
-            None if run.recovered && player.over() => {
+            None if run.recovered => {
                 "Caught: the capture point stayed on the foot, and the body came to rest over it."
                     .to_owned()
             }
-            _ => "Still settling.".to_owned(),
+            None => "Still settling.".to_owned(),
         }
     }
 
