@@ -89,6 +89,11 @@ pub fn write<T: Serialize + PartialEq, E: Serialize>(
     if !moment.events.is_empty() {
         lines += &format!("@events: {}\n", serde_json::to_string(&moment.events).ok()?);
     }
+    if lines.is_empty() {
+        // Back to the schema's defaults: say so, so that a link is never
+        // bare (see [`is_bare`]).
+        lines += "@t: 0\n";
+    }
     let mut text = String::from(SETTINGS);
     URL_SAFE_NO_PAD.encode_string(lines.as_bytes(), &mut text);
     (text.len() <= MAX_LEN).then_some(text)
@@ -132,6 +137,13 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
     };
     let settings = kinolab_schema::validate(&spec)?.settings()?;
     Ok((settings, moment))
+}
+
+/// Whether `text` is a settings link with nothing in it: a link cut
+/// short, since [`write`] always writes a line. (It would [`read`] as the
+/// schema's defaults.)
+pub fn is_bare(text: &str) -> bool {
+    text.strip_prefix(SETTINGS).is_some_and(str::is_empty)
 }
 
 /// Whether `settings` of the widget `widget` are within its schema (for
@@ -235,6 +247,18 @@ mod tests {
             Ok(Legs { legs: 2 }),
             "the schema's default"
         );
+        assert!(is_bare(&encode("")));
+    }
+
+    #[test]
+    fn a_link_back_to_the_defaults_is_not_bare() {
+        let moment: Moment<String> = Moment::default();
+        let text =
+            write("leg-events", &Legs { legs: 2 }, &Legs { legs: 6 }, &moment).unwrap_or_default();
+        assert!(!is_bare(&text), "{text}");
+        let (back, m): (Legs, Moment<String>) =
+            read("leg-events", &text).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((back, m), (Legs { legs: 2 }, moment));
     }
 
     #[test]
