@@ -91,7 +91,7 @@ pub fn write<T: Serialize + PartialEq, E: Serialize>(
     }
     if lines.is_empty() {
         // Every setting at the schema's default: say so, since a link with
-        // no lines at all is one cut short.
+        // no lines at all is one cut short (see [`is_bare`]).
         lines += "@t: 0\n";
     }
     let mut text = String::from(SETTINGS);
@@ -140,6 +140,13 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
     };
     let settings = kinolab_schema::validate(&spec)?.settings()?;
     Ok((settings, moment))
+}
+
+/// Whether `text` is a settings link with nothing in it: a link cut
+/// short, since [`write`] always writes a line. (It would [`read`] as the
+/// schema's defaults.)
+pub fn is_bare(text: &str) -> bool {
+    text.strip_prefix(SETTINGS).is_some_and(str::is_empty)
 }
 
 /// Whether `settings` of the widget `widget` are within its schema (for
@@ -253,6 +260,18 @@ mod tests {
         )
         .unwrap_or_default();
         assert_eq!(read_legs(&back), Ok(Legs { legs: 2 }));
+        assert!(is_bare(&encode("")));
+    }
+
+    #[test]
+    fn a_link_back_to_the_defaults_is_not_bare() {
+        let moment: Moment<String> = Moment::default();
+        let text =
+            write("leg-events", &Legs { legs: 2 }, &Legs { legs: 6 }, &moment).unwrap_or_default();
+        assert!(!is_bare(&text), "{text}");
+        let (back, m): (Legs, Moment<String>) =
+            read("leg-events", &text).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((back, m), (Legs { legs: 2 }, moment));
     }
 
     #[test]

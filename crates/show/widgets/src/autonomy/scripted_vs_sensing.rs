@@ -6,52 +6,76 @@ use kinolab_autonomy::{PickCell, PickTrial};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::{PlaneView, marks};
-use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
+use crate::widget::{LabWidget, Params, range};
+
+/// The widget's name in the schema.
+const NAME: &str = "scripted-vs-sensing";
 
 const PARTS: usize = 40;
 
-/// What the learner sets (millimetres in the UI; the core takes metres),
-/// and what a link carries.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-struct Setup {
+/// What the lesson sets and a link carries: the schema's parameters, in
+/// metres (the sliders show millimetres).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    gripper_tolerance: f64,
+    placement_error: f64,
+    sensor_error: f64,
+    seed: u64,
+}
+
+/// The links of the first format: the widget's own struct, in mm.
+#[derive(Deserialize)]
+struct Legacy {
     placement_mm: f64,
     sensor_mm: f64,
     seed: u64,
 }
 
 struct ScriptedVsSensing {
-    setup: Setup,
-    initial: Setup,
-    tolerance_mm: f64,
+    settings: Settings,
+    initial: Settings,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let setup = Setup {
-        placement_mm: 15.0,
-        sensor_mm: 2.0,
-        seed: 1,
-    };
+    let settings: Settings = p.settings()?;
     Ok(Box::new(ScriptedVsSensing {
-        setup,
-        initial: setup,
-        tolerance_mm: p.number("gripper_tolerance").unwrap_or(0.01) * 1000.0,
+        initial: settings.clone(),
+        settings,
     }))
+}
+
+/// A slider in millimetres over a setting in metres, its range the
+/// schema's; the setting changes only when the slider is moved.
+fn millimetres(ui: &mut egui::Ui, metres: &mut f64, param: &str, label: &str) {
+    let label = ui.label(label);
+    let r = range(NAME, param);
+    let mut mm = *metres * 1000.0;
+    let slider = egui::Slider::new(&mut mm, r.start() * 1000.0..=r.end() * 1000.0);
+    if ui
+        .add(slider.fixed_decimals(0))
+        .labelled_by(label.id)
+        .changed()
+    {
+        *metres = mm / 1000.0;
+    }
 }
 
 impl ScriptedVsSensing {
     fn controls(&mut self, ui: &mut egui::Ui) {
+        let s = &mut self.settings;
         crate::widget::control_row(ui, |ui| {
-            let label = ui.label("How far parts stray from their spot (mm):");
-            ui.add(egui::Slider::new(&mut self.setup.placement_mm, 0.0..=50.0).fixed_decimals(0))
-                .labelled_by(label.id);
+            let label = "How far parts stray from their spot (mm):";
+            millimetres(ui, &mut s.placement_error, "placement_error", label);
         });
         crate::widget::control_row(ui, |ui| {
-            let label = ui.label("Sensing robot's measurement error (mm):");
-            ui.add(egui::Slider::new(&mut self.setup.sensor_mm, 0.0..=30.0).fixed_decimals(0))
-                .labelled_by(label.id);
+            let label = "Sensing robot's measurement error (mm):";
+            millimetres(ui, &mut s.sensor_error, "sensor_error", label);
             if ui.button("New batch of parts").clicked() {
-                self.setup.seed = self.setup.seed.wrapping_add(1);
+                let last = *range(NAME, "seed").end() as u64;
+                s.seed = if s.seed >= last { 0 } else { s.seed + 1 };
             }
         });
     }
@@ -81,17 +105,18 @@ impl ScriptedVsSensing {
             ink,
         );
         // Both panels share one scale: the larger of the stray disc and 20 mm fits.
-        let extent_m = self.setup.placement_mm.max(self.setup.sensor_mm).max(20.0) * 1.15 / 1000.0;
+        let s = &self.settings;
+        let extent_m = s.placement_error.max(s.sensor_error).max(0.02) * 1.15;
         let plot = Rect::from_min_max(area.min + vec2(0.0, 28.0), area.max - vec2(0.0, 6.0));
         let view = PlaneView::centred(plot, [0.0, 0.0], extent_m);
         let centre = view.to_screen([0.0, 0.0]);
         marks::plus(painter, centre, 6.0, Stroke::new(1.0, ink));
         if scripted {
-            let reach = view.length(self.tolerance_mm / 1000.0);
+            let reach = view.length(s.gripper_tolerance);
             painter.circle_stroke(centre, reach, Stroke::new(1.5, theme::accent(ui)));
         }
-        if self.setup.placement_mm > 0.0 {
-            let stray = view.length(self.setup.placement_mm / 1000.0);
+        if s.placement_error > 0.0 {
+            let stray = view.length(s.placement_error);
             painter.circle_stroke(centre, stray, Stroke::new(1.0, ink.gamma_multiply(0.3)));
         }
         for t in trials {
@@ -113,12 +138,8 @@ impl ScriptedVsSensing {
 impl LabWidget for ScriptedVsSensing {
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
-        let s = self.setup;
-        let cell = match PickCell::new(
-            s.placement_mm / 1000.0,
-            self.tolerance_mm / 1000.0,
-            s.sensor_mm / 1000.0,
-        ) {
+        let s = &self.settings;
+        let cell = match PickCell::new(s.placement_error, s.gripper_tolerance, s.sensor_error) {
             Ok(cell) => cell,
             Err(e) => {
                 ui.label(e.to_string());
@@ -148,27 +169,94 @@ impl LabWidget for ScriptedVsSensing {
             "In the long run: scripted {:.0} %, sensing {:.0} % (gripper tolerance {:.0} mm; green = grasped, red = missed).",
             cell.scripted_success() * 100.0,
             cell.sensing_success() * 100.0,
-            self.tolerance_mm
+            s.gripper_tolerance * 1000.0
         ));
+        export::bar(
+            ui,
+            ui.scope_id().with("pick-exports"),
+            &[Export::Png {
+                file: "kinolab-scripted-vs-sensing.png",
+                rect: response.rect,
+            }],
+        );
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.setup, &self.initial)
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(s) = link::decode::<Setup>(state) {
-            self.setup = Setup {
-                placement_mm: clamp_finite(s.placement_mm, 0.0, 50.0),
-                sensor_mm: clamp_finite(s.sensor_mm, 0.0, 30.0),
-                seed: s.seed,
-            };
+        if link::is_bare(state) {
+            return Err("it is empty (cut short)".into());
         }
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => Settings {
+                    placement_error: old.placement_mm / 1000.0,
+                    sensor_error: old.sensor_mm / 1000.0,
+                    seed: old.seed,
+                    ..self.initial.clone()
+                },
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        self.settings = settings;
         Ok(())
     }
 }
 
-/// `x` within `[lo, hi]`; `lo` for NaN.
-fn clamp_finite(x: f64, lo: f64, hi: f64) -> f64 {
-    if x.is_nan() { lo } else { x.clamp(lo, hi) }
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::spec;
+
+    fn widget(params: &[(&str, &str)]) -> ScriptedVsSensing {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        ScriptedVsSensing {
+            initial: settings.clone(),
+            settings,
+        }
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = link::encode(&(25.0_f64, 4.0_f64, 7_u64)).unwrap_or_default();
+        let mut w = widget(&[("gripper_tolerance", "0.02")]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(
+            w.settings,
+            Settings {
+                gripper_tolerance: 0.02,
+                placement_error: 0.025,
+                sensor_error: 0.004,
+                seed: 7,
+            }
+        );
+        // Out of the schema's range: refused, the lesson's settings kept.
+        let bad = link::encode(&(250.0_f64, 4.0_f64, 7_u64)).unwrap_or_default();
+        let mut w = widget(&[("placement_error", "0.03")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.placement_error, 0.03);
+    }
+
+    #[test]
+    fn the_settings_travel_in_the_link() {
+        let mut w = widget(&[]);
+        assert_eq!(w.state(), None);
+        w.settings.sensor_error = 0.011;
+        w.settings.seed = 3;
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+    }
 }

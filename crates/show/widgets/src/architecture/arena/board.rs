@@ -6,8 +6,9 @@ use kinolab_architectures::arena::Entrant;
 use kinolab_architectures::exercise::{MISSIONS, pick_architecture, survive_the_person};
 use kinolab_common::display::fixed;
 
+use super::ArchitectureArena;
 use super::canvas::NAMES;
-use super::{ArchitectureArena, Task};
+use super::settings::Task;
 use crate::widget::feedback_ui;
 
 /// The scoreboard's rows.
@@ -43,8 +44,12 @@ fn cell(row: usize, e: &Entrant, spent: f64) -> String {
 }
 
 impl ArchitectureArena {
-    pub(super) fn board(&self, ui: &mut egui::Ui) {
-        let Some(arena) = &self.arena else { return };
+    pub(super) fn board(&mut self, ui: &mut egui::Ui) {
+        let Some(player) = &mut self.player else {
+            return;
+        };
+        let race = player.state();
+        let arena = &race.arena;
         crate::widget::sideways(ui, |ui| {
             egui::Grid::new(ui.scope_id().with("scores"))
                 .striped(true)
@@ -61,7 +66,7 @@ impl ArchitectureArena {
                     ui.end_row();
                     for (row, label) in ROWS.iter().enumerate() {
                         ui.label(*label);
-                        for (e, spent) in arena.entrants.iter().zip(self.spent) {
+                        for (e, spent) in arena.entrants.iter().zip(race.spent) {
                             ui.label(cell(row, e, spent));
                         }
                         ui.end_row();
@@ -78,32 +83,26 @@ impl ArchitectureArena {
                 ui.label(RichText::new("Task: set the planning cost so the hierarchical robot reaches the goal without touching the person, then check.").strong());
                 if ui.button("Check").clicked() {
                     self.feedback = Some(
-                        survive_the_person(self.design.planning_cost_ms)
+                        survive_the_person(self.settings.planning_cost)
                             .unwrap_or_else(|e| kinolab_common::Feedback::not_yet(e.to_string())),
                     );
                 }
             }
             Task::PickArchitecture => {
                 ui.label(RichText::new("Task: pick an architecture for each mission; the check runs each pick in the office.").strong());
-                for (m, pick) in MISSIONS.iter().zip(self.design.picks.iter_mut()) {
+                for (m, pick) in MISSIONS.iter().zip(self.settings.picks.0.iter_mut()) {
                     ui.horizontal_wrapped(|ui| {
                         ui.label(format!("{}:", m.name));
-                        for (k, kind) in Architecture::ALL.iter().enumerate() {
-                            if ui
-                                .selectable_label(usize::from(*pick) == k, kind.name())
-                                .clicked()
-                            {
-                                *pick = k as u8;
+                        for kind in Architecture::ALL {
+                            if ui.selectable_label(*pick == kind, kind.name()).clicked() {
+                                *pick = kind;
                                 self.feedback = None;
                             }
                         }
                     });
                 }
                 if ui.button("Check by running").clicked() {
-                    let picks = self
-                        .design
-                        .picks
-                        .map(|k| Architecture::ALL[usize::from(k) % 3]);
+                    let picks = self.settings.picks.0;
                     self.feedback = Some(
                         pick_architecture(picks)
                             .unwrap_or_else(|e| kinolab_common::Feedback::not_yet(e.to_string())),

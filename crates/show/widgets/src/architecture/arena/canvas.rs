@@ -1,183 +1,171 @@
 //! The arena's controls, its picture (the world, three robots, one robot's
-//! beliefs) and the scrub bar.
+//! beliefs) and its scrub bar.
 
 use egui::{Color32, Rect, RichText, Sense, Stroke, pos2, vec2};
+use kinolab_architectures::Architecture;
 use kinolab_architectures::map::Cartographer;
 use kinolab_architectures::paradigm::Belief;
-use kinolab_common::display::fixed;
 
-use super::{ArchitectureArena, WORLDS};
+use super::ArchitectureArena;
+use super::race::Spring;
+use super::settings::{Scripted, WorldId};
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
-use crate::draw::PlaneView;
+use crate::draw::{PlaneView, canvas};
 use crate::theme;
+use crate::widget::range;
 
 pub(super) const NAMES: [&str; 3] = ["Hierarchical", "Reactive", "Hybrid"];
 
-/// The surprises that can be sprung while the robots run.
-const SPRINGS: [(&str, &str); 3] = [
-    ("door", "Close the door"),
-    ("person", "Send a person in"),
-    ("moved-goal", "Move the goal"),
-];
-
 impl ArchitectureArena {
     pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
-        let before = self.design.clone();
+        let before = self.settings.clone();
+        let s = &mut self.settings;
         ui.horizontal_wrapped(|ui| {
             egui::ComboBox::new(ui.scope_id().with("world"), "world")
-                .selected_text(self.design.world.clone())
+                .selected_text(s.world.id())
                 .show_ui(ui, |ui| {
-                    for w in WORLDS {
-                        ui.selectable_value(&mut self.design.world, w.to_owned(), w);
+                    for w in WorldId::ALL {
+                        ui.selectable_value(&mut s.world, w, w.id());
                     }
                 });
             egui::ComboBox::new(ui.scope_id().with("surprise"), "surprise")
-                .selected_text(self.design.surprise.clone())
+                .selected_text(s.surprise.id())
                 .show_ui(ui, |ui| {
-                    for s in kinolab_architectures::surprise::ids() {
-                        ui.selectable_value(&mut self.design.surprise, s.to_owned(), s);
+                    for k in Scripted::ALL {
+                        ui.selectable_value(&mut s.surprise, k, k.id());
                     }
                 });
         });
         ui.add(
-            egui::Slider::new(&mut self.design.planning_cost_ms, 0.0..=20.0)
+            egui::Slider::new(&mut s.planning_cost, range(super::NAME, "planning_cost"))
                 .step_by(0.5)
                 .text("planning cost (ms/cell)"),
         );
-        if self.design != before {
-            self.playing = false;
-            self.rebuild();
-        }
         ui.horizontal_wrapped(|ui| {
-            let done = self
-                .arena
-                .as_ref()
-                .is_some_and(kinolab_architectures::Arena::done);
-            let label = if self.playing { "Pause" } else { "Play" };
-            if ui.button(label).clicked() {
-                if done {
-                    self.rebuild();
-                }
-                self.cursor = self.frames.len();
-                self.playing = !self.playing;
-            }
-            if ui.button("Step").clicked() {
-                self.playing = false;
-                self.step();
-            }
-            if ui.button("Restart").clicked() {
-                self.rebuild();
-                self.playing = true;
-            }
-            for (speed, text) in [(1, "1×"), (4, "4×")] {
-                if ui.selectable_label(self.speed == speed, text).clicked() {
-                    self.speed = speed;
-                }
-            }
-            let t = self
-                .frames
-                .get(self.cursor.saturating_sub(1))
-                .map_or(0.0, |f| f.t);
-            ui.label(format!("t = {} s", fixed(t, 1)));
-        });
-        ui.horizontal_wrapped(|ui| {
-            ui.label("Spring now:");
-            for (id, text) in SPRINGS {
-                let possible = self.design.world == "office";
-                if ui.add_enabled(possible, egui::Button::new(text)).clicked() {
-                    self.spring(id);
-                }
-            }
-        });
-        ui.horizontal_wrapped(|ui| {
-            ui.label("Beliefs of:");
+            ui.label("Beliefs of (and Save run for):");
             for (i, name) in NAMES.iter().enumerate() {
                 let text = RichText::new(*name).color(theme::ARCHITECTURE_COLORS[i]);
-                if ui.selectable_label(self.focus == i, text).clicked() {
-                    self.focus = i;
+                let kind = Architecture::ALL[i];
+                if ui.selectable_label(s.focus == kind, text).clicked() {
+                    s.focus = kind;
                 }
             }
         });
+        let changed = |a: &super::Settings, b: &super::Settings| {
+            (a.world, a.surprise, a.planning_cost) != (b.world, b.surprise, b.planning_cost)
+        };
+        if changed(&self.settings, &before) {
+            self.rebuild();
+        }
     }
 
-    pub(super) fn canvas(&mut self, ui: &mut egui::Ui) {
-        let Some(arena) = &self.arena else { return };
-        let Some(first) = arena.entrants.first() else {
-            return;
-        };
-        let world = &first.sim.world;
+    /// The surprise buttons: each springs at the instant shown.
+    pub(super) fn springs(&mut self, ui: &mut egui::Ui) {
+        let possible = self.player.is_some();
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Spring now:");
+            for kind in Spring::ALL {
+                if ui
+                    .add_enabled(possible, egui::Button::new(kind.label()))
+                    .on_hover_text("At the instant shown; what came after it is run again")
+                    .clicked()
+                {
+                    self.spring(kind);
+                }
+            }
+        });
+        if let Some(notice) = &self.notice {
+            ui.label(RichText::new(notice).color(theme::error_color(ui)));
+        }
+    }
+
+    /// The world, the chosen robot's beliefs, every robot's trail and
+    /// pose at the instant shown; where it was drawn.
+    pub(super) fn canvas(&mut self, ui: &mut egui::Ui) -> Option<Rect> {
+        let focus = self.settings.focus_index();
+        let player = self.player.as_mut()?;
+        let trails: Vec<Vec<[f64; 2]>> = (0..self.first.len())
+            .map(|i| {
+                let later = player
+                    .ticks_shown()
+                    .iter()
+                    .filter_map(|f| f.robots.get(i))
+                    .map(|(s, _)| [s.motion.x, s.motion.y]);
+                self.first
+                    .get(i)
+                    .map(|s| [s.motion.x, s.motion.y])
+                    .into_iter()
+                    .chain(later)
+                    .collect()
+            })
+            .collect();
+        let t = player.time();
+        let arena = &player.state().arena;
+        let world = &arena.entrants.first()?.sim.world;
         let b = world.bounds;
         let width = ui.available_width();
         let height = (width * (b.height() / b.width()) as f32).clamp(180.0, 520.0);
-        let (response, painter) = ui.allocate_painter(vec2(width, height), Sense::hover());
+        let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
         let view = PlaneView::fit(
             response.rect.shrink(6.0),
             [b.x_min, b.y_min],
             [b.x_max, b.y_max],
         );
-        let shown = self.cursor.clamp(1, self.frames.len().max(1));
-        let t = self.frames.get(shown - 1).map_or(0.0, |f| f.t);
         draw_world(ui, &painter, &view, world, t);
-        if let Some(e) = arena.entrants.get(self.focus) {
-            draw_belief(
-                &painter,
-                &view,
-                &e.controller.belief(),
-                theme::ARCHITECTURE_COLORS[self.focus],
-            );
+        if let Some(e) = arena.entrants.get(focus) {
+            let color = theme::ARCHITECTURE_COLORS[focus];
+            draw_belief(&painter, &view, &e.controller.belief(), color);
         }
         let ink = ui.visuals().text_color();
-        for (i, e) in arena.entrants.iter().enumerate() {
-            let trail = self.frames[..shown]
-                .iter()
-                .filter_map(|f| f.poses.get(i))
-                .map(|p| [p.x, p.y]);
+        for (i, (e, trail)) in arena.entrants.iter().zip(trails).enumerate() {
+            let color = theme::ARCHITECTURE_COLORS[i % 3];
             draw_trail(
                 &painter,
                 &view,
-                trail,
-                theme::ARCHITECTURE_COLORS[i].gamma_multiply(0.8),
+                trail.into_iter(),
+                color.gamma_multiply(0.8),
             );
-            if let Some(pose) = self.frames.get(shown - 1).and_then(|f| f.poses.get(i)) {
-                draw_robot(
-                    &painter,
-                    &view,
-                    pose,
-                    e.sim.body.radius(),
-                    theme::ARCHITECTURE_COLORS[i],
-                    ink,
-                );
-            }
+            draw_robot(
+                &painter,
+                &view,
+                &e.sim.pose,
+                e.sim.body.radius(),
+                color,
+                ink,
+            );
         }
+        Some(response.rect)
     }
 
-    /// A bar across the run so far: click or drag to look back.
-    pub(super) fn scrubber(&mut self, ui: &mut egui::Ui) {
-        let width = ui.available_width();
-        let (rect, response) = ui.allocate_exact_size(vec2(width, 14.0), Sense::click_and_drag());
-        let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 3.0, ui.visuals().extreme_bg_color);
-        let total = self.arena.as_ref().map_or(1.0, |a| a.duration).max(1e-9);
-        let x = |t: f64| rect.left() + width * (t / total).clamp(0.0, 1.0) as f32;
-        let end = self.frames.last().map_or(0.0, |f| f.t);
-        let at = self
-            .frames
-            .get(self.cursor.saturating_sub(1))
-            .map_or(0.0, |f| f.t);
-        painter.rect_filled(
-            Rect::from_min_max(rect.min, pos2(x(end), rect.bottom())),
-            3.0,
-            theme::accent(ui).gamma_multiply(0.3),
+    /// The scrub bar, with a mark where each surprise was sprung.
+    pub(super) fn timeline(&mut self, ui: &mut egui::Ui) {
+        let Some(player) = &mut self.player else {
+            return;
+        };
+        let (duration, dt) = self
+            .setup
+            .as_ref()
+            .map_or((1.0, 1.0), |s| (s.duration, s.dt));
+        let sprung: Vec<usize> = player
+            .events()
+            .iter()
+            .map(|(t, _)| (t / dt).round() as usize)
+            .collect();
+        let red = theme::error_color(ui);
+        player.timeline(
+            ui,
+            "Time in the arena",
+            (duration / dt).round() as usize,
+            &mut |painter, rect, x, _| {
+                for k in &sprung {
+                    painter.line_segment(
+                        [pos2(x(*k), rect.top()), pos2(x(*k), rect.bottom())],
+                        Stroke::new(2.0, red),
+                    );
+                }
+            },
         );
-        painter.line_segment(
-            [pos2(x(at), rect.top()), pos2(x(at), rect.bottom())],
-            Stroke::new(2.0, ui.visuals().text_color()),
-        );
-        if let Some(p) = response.interact_pointer_pos() {
-            let t = f64::from((p.x - rect.left()) / width) * total;
-            self.playing = false;
-            self.cursor = self.frames.partition_point(|f| f.t <= t).max(1);
-        }
+        player.run(ui, 8);
     }
 }
 

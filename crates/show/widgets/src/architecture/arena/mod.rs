@@ -1,184 +1,181 @@
 //! The architecture arena: a hierarchical, a reactive and a hybrid robot
 //! with the same body and sensors, each in its own copy of one world, on
-//! one clock. Surprises can be scripted into the set-up or sprung while it
-//! runs; one robot's beliefs (its map, its plan, the search in progress)
-//! are drawn over what is really there; a scoreboard computed by the core
-//! says how each is doing, next to the time its controller took here.
+//! one clock, which the player plays, steps and scrubs both ways.
+//! Surprises can be scripted into the set-up or sprung while it runs (in
+//! any world: the core places them from its geometry); one robot's
+//! beliefs (its map, its plan, the search in progress) are drawn over what
+//! is really there; a scoreboard computed by the core says how each is
+//! doing, next to the time its controller took here.
 
 mod board;
 mod canvas;
+mod race;
+mod settings;
 
-use kinolab_architectures::exercise::office;
-use kinolab_architectures::surprise::OFFICE;
-use kinolab_architectures::{Architecture, Arena, ArenaSetup, Surprise};
+use kinolab_architectures::run::Sample;
+use kinolab_architectures::{Architecture, Arena, ArenaSetup};
 use kinolab_common::Feedback;
-use kinolab_world::Pose;
-use serde::{Deserialize, Serialize};
 
-use crate::link;
-use crate::widget::{LabWidget, Params};
+use self::race::{Race, Spring, sample};
+use self::settings::{Legacy, Settings, WorldId};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::player::{Player, Speed};
+use crate::widget::{LabWidget, Params, SavedRun};
 
-/// The worlds the arena offers (each needs a start and a goal).
-const WORLDS: [&str; 4] = ["office", "two-rooms", "u-trap", "crossing"];
-
-/// Everything the learner can change, and what a link carries.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Design {
-    world: String,
-    surprise: String,
-    planning_cost_ms: f64,
-    /// The pick-an-architecture task's choice per mission.
-    picks: [u8; 3],
-}
-
-/// Where every robot was after one step.
-#[derive(Debug, Clone, PartialEq)]
-struct Frame {
-    t: f64,
-    poses: Vec<Pose>,
-}
-
-/// The graded tasks.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Task {
-    SurviveThePerson,
-    PickArchitecture,
-}
+/// The widget's name in the schema.
+const NAME: &str = "architecture-arena";
 
 struct ArchitectureArena {
-    design: Design,
-    initial: Design,
-    task: Option<Task>,
-    arena: Option<Arena>,
+    settings: Settings,
+    initial: Settings,
+    /// The set-up the settings make, and the player that runs it.
+    setup: Option<ArenaSetup>,
+    player: Option<Player<Race>>,
+    /// Every robot's sample at the start (the ticks hold the rest).
+    first: Vec<Sample>,
+    /// Why the set-up cannot run.
     problem: Option<String>,
-    frames: Vec<Frame>,
-    /// How many frames are shown (scrubbing moves it back).
-    cursor: usize,
-    playing: bool,
-    speed: usize,
-    /// Whose beliefs are drawn.
-    focus: usize,
-    /// Microseconds each robot's steps (sensing, controller, motion) took
-    /// here, summed.
-    spent: [f64; 3],
+    /// Why a surprise could not be sprung.
+    notice: Option<String>,
     feedback: Option<Feedback>,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let task = match p.choice("task") {
-        Some("survive-the-person") => Some(Task::SurviveThePerson),
-        Some("pick-architecture") => Some(Task::PickArchitecture),
-        _ => None,
-    };
-    let surprise = match task {
-        Some(Task::SurviveThePerson) => "person",
-        _ => p.choice("surprise").unwrap_or("none"),
-    };
-    let design = Design {
-        world: p.choice("world").unwrap_or("office").to_owned(),
-        surprise: surprise.to_owned(),
-        planning_cost_ms: p.number("planning_cost").unwrap_or(2.0),
-        picks: [1, 1, 1],
-    };
-    let mut widget = ArchitectureArena {
-        initial: design.clone(),
-        design,
-        task,
-        arena: None,
-        problem: None,
-        frames: Vec::new(),
-        cursor: 0,
-        playing: false,
-        speed: 4,
-        focus: 0,
-        spent: [0.0; 3],
-        feedback: None,
-    };
-    widget.rebuild();
-    Ok(Box::new(widget))
-}
-
-/// The surprise called `id` in `world`: the office has its own; elsewhere
-/// only the kinds that need no place (noise, a wrong map of obstacle 0).
-fn surprise(id: &str, world: &str) -> Option<Surprise> {
-    let spec = match (world, id) {
-        (_, "none") => return None,
-        ("office", _) => OFFICE.iter().find(|(name, _)| *name == id)?.1,
-        (_, "noise") => "noise:0.15",
-        (_, "wrong-map") => "wrong-map:0",
-        _ => return None,
-    };
-    Surprise::parse("surprise", spec).ok()
+    Ok(Box::new(ArchitectureArena::new(p.settings()?)))
 }
 
 impl ArchitectureArena {
-    fn setup(&self) -> Result<ArenaSetup, String> {
-        let mut setup = if self.design.world == "office" {
-            office(None).map_err(|e| e.to_string())?
-        } else {
-            let world =
-                kinolab_world::catalogue::world(&self.design.world).map_err(|e| e.to_string())?;
-            ArenaSetup::new(world)
+    fn new(settings: Settings) -> Self {
+        let mut widget = ArchitectureArena {
+            initial: settings.clone(),
+            settings,
+            setup: None,
+            player: None,
+            first: Vec::new(),
+            problem: None,
+            notice: None,
+            feedback: None,
         };
-        setup
-            .surprises
-            .extend(surprise(&self.design.surprise, &self.design.world));
-        setup.planning_cost = self.design.planning_cost_ms / 1e3;
-        Ok(setup)
+        widget.rebuild();
+        widget
     }
 
-    /// Start again from the design.
+    /// Start again from the settings, paused at the start.
     fn rebuild(&mut self) {
-        self.frames.clear();
-        self.cursor = 0;
-        self.spent = [0.0; 3];
         self.feedback = None;
-        match self
-            .setup()
-            .and_then(|s| Arena::new(&s, &Architecture::ALL).map_err(|e| e.to_string()))
-        {
-            Ok(arena) => {
-                self.frames.push(Frame {
-                    t: 0.0,
-                    poses: arena.entrants.iter().map(|e| e.sim.pose).collect(),
-                });
-                self.cursor = 1;
-                self.arena = Some(arena);
+        self.notice = None;
+        let made = self.settings.setup().and_then(|setup| {
+            let arena = Arena::new(&setup, &Architecture::ALL).map_err(|e| e.to_string())?;
+            Ok((setup, arena))
+        });
+        match made {
+            Ok((setup, arena)) => {
+                self.first = arena.entrants.iter().map(sample).collect();
+                let office = self.settings.world == WorldId::Office;
+                let mut player = Player::new(Race::new(arena, office, setup.dt));
+                player.speed = Speed::Four;
+                self.player = Some(player);
+                self.setup = Some(setup);
                 self.problem = None;
             }
             Err(e) => {
-                self.arena = None;
+                self.player = None;
+                self.setup = None;
+                self.first.clear();
                 self.problem = Some(e);
             }
         }
     }
 
-    /// One step of every robot, timed.
-    fn step(&mut self) {
-        let Some(arena) = self.arena.as_mut() else {
+    /// Spring `kind` at the instant shown, or say why it has no place.
+    fn spring(&mut self, kind: Spring) {
+        let Some(player) = &mut self.player else {
             return;
         };
-        if arena.done() {
-            self.playing = false;
-            return;
+        match player.state().place(kind) {
+            Ok(_) => {
+                player.spring(kind);
+                self.notice = None;
+            }
+            Err(e) => self.notice = Some(format!("{}: {e}.", kind.label())),
         }
-        for (i, spent) in self.spent.iter_mut().enumerate() {
-            let start = web_time::Instant::now();
-            arena.step_one(i);
-            *spent += start.elapsed().as_secs_f64() * 1e6;
-        }
-        self.frames.push(Frame {
-            t: arena.time(),
-            poses: arena.entrants.iter().map(|e| e.sim.pose).collect(),
-        });
-        self.cursor = self.frames.len();
     }
 
-    /// Spring a surprise on the running robots.
-    fn spring(&mut self, id: &str) {
-        if let (Some(arena), Some(s)) = (self.arena.as_mut(), surprise(id, &self.design.world)) {
-            self.problem = arena.spring(&s).err().map(|e| e.to_string());
+    /// `kinolab arena`'s arguments for the robot in focus, with every
+    /// surprise in the run up to the instant shown.
+    fn run_args(&mut self) -> Option<Vec<String>> {
+        let file = self.file_name();
+        let setup = self.setup.as_ref()?;
+        let race = self.player.as_mut()?.state();
+        let mut args = vec![
+            "arena".to_owned(),
+            file,
+            "--architecture".to_owned(),
+            self.settings.focus.name().to_owned(),
+        ];
+        for s in setup.surprises.iter().chain(&race.sprung) {
+            args.push("--perturb".to_owned());
+            args.push(s.spec());
         }
+        args.extend([
+            "--planning-cost".to_owned(),
+            self.settings.planning_cost.to_string(),
+            "--duration".to_owned(),
+            setup.duration.to_string(),
+        ]);
+        Some(args)
+    }
+
+    fn file_name(&self) -> String {
+        format!("{}.world.json", self.settings.world.id())
+    }
+
+    /// The robot in focus's samples from the start to the instant shown,
+    /// as `kinolab arena` prints them.
+    fn samples(&self) -> Vec<Sample> {
+        let focus = self.settings.focus_index();
+        let Some(player) = &self.player else {
+            return Vec::new();
+        };
+        let ticks = player.ticks_shown().iter().filter_map(|f| {
+            f.robots
+                .get(focus)
+                .filter(|(_, moved)| *moved)
+                .map(|(s, _)| s.clone())
+        });
+        self.first
+            .get(focus)
+            .cloned()
+            .into_iter()
+            .chain(ticks)
+            .collect()
+    }
+
+    fn exports(&mut self, ui: &mut egui::Ui, view: Option<egui::Rect>) {
+        let command = self
+            .run_args()
+            .map_or_else(String::new, |a| format!("kinolab {}", a.join(" ")));
+        let file = self.file_name();
+        let world = || {
+            self.setup
+                .as_ref()
+                .map(|s| s.world.to_json())
+                .ok_or_else(|| "this set-up cannot run".to_owned())
+        };
+        let mut offers = Vec::new();
+        if let Some(rect) = view {
+            offers.push(Export::Png {
+                file: "kinolab-architecture-arena.png",
+                rect,
+            });
+        }
+        offers.push(Export::Run {
+            file: &file,
+            command: &command,
+            make: &world,
+        });
+        export::bar(ui, ui.scope_id().with("arena-exports"), &offers);
     }
 }
 
@@ -188,33 +185,63 @@ impl LabWidget for ArchitectureArena {
         if let Some(problem) = &self.problem {
             crate::widget::error_box(ui, "This set-up cannot run", problem);
         }
-        self.canvas(ui);
-        self.scrubber(ui);
-        self.board(ui);
-        if let Some(task) = self.task {
-            self.task_ui(ui, task);
+        if let Some(player) = &mut self.player {
+            player.controls(ui);
         }
-        if self.playing {
-            for _ in 0..self.speed {
-                self.step();
-            }
-            crate::widget::animate(ui);
+        self.springs(ui);
+        let view = self.canvas(ui);
+        self.timeline(ui);
+        self.board(ui);
+        self.exports(ui, view);
+        if let Some(task) = self.settings.task {
+            self.task_ui(ui, task);
         }
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.design, &self.initial)
+        let moment = self.player.as_ref().map(Player::moment).unwrap_or_default();
+        link::write(NAME, &self.settings, &self.initial, &moment)
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(d) = link::decode::<Design>(state)
-            && WORLDS.contains(&d.world.as_str())
-            && (0.0..=20.0).contains(&d.planning_cost_ms)
-            && d.picks.iter().all(|p| *p < 3)
-        {
-            self.design = d;
-            self.rebuild();
+        if link::is_bare(state) {
+            return Err("it is empty (cut short)".into());
+        }
+        let (settings, moment) = match link::read::<Settings, Spring>(NAME, state) {
+            Ok(read) => read,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => (old.settings(&self.initial)?, Moment::default()),
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        self.settings = settings;
+        self.rebuild();
+        if let Some(player) = &mut self.player {
+            player.replay(&moment.events, moment.instant);
         }
         Ok(())
     }
+
+    fn seek(&mut self, t: f64) {
+        if let Some(player) = &mut self.player {
+            player.seek_time(t);
+        }
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        let args = self.run_args()?;
+        let text = self.setup.as_ref()?.world.to_json();
+        let samples = kinolab_common::display::tidy_report(&self.samples()).ok()?;
+        Some(SavedRun {
+            file: self.file_name(),
+            text,
+            args,
+            shows: vec![("/samples".into(), samples)],
+        })
+    }
 }
+
+#[cfg(test)]
+mod tests;
