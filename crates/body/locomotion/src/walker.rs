@@ -109,8 +109,17 @@ impl Walker {
         Ok(self)
     }
 
-    /// Whether leg `i` stands at `tau`, and where its foot should be.
-    fn plan(&self, i: usize, tau: f64) -> Result<(bool, Vector3<f64>), FieldError> {
+    /// Whether each leg stands at `tau`, and where its foot should be: the
+    /// gait's timing, or the learner's sequencer when there is one.
+    pub fn plan(&self, tau: f64) -> Result<Vec<(bool, Vector3<f64>)>, kinolab_script::ScriptError> {
+        (0..LEGS.len()).map(|i| self.plan_leg(i, tau)).collect()
+    }
+
+    fn plan_leg(
+        &self,
+        i: usize,
+        tau: f64,
+    ) -> Result<(bool, Vector3<f64>), kinolab_script::ScriptError> {
         let Some(script) = &self.sequencer else {
             let sigma = (tau - self.gait.legs[i].phase).rem_euclid(1.0);
             return Ok((sigma >= 1.0 - self.gait.duty_factor, self.target(i, tau)));
@@ -124,10 +133,8 @@ impl Walker {
             ("z", kinolab_script::value::number(n.z)),
         ]);
         let at = kinolab_script::When::Phase(tau);
-        let call = script
-            .call_pure(vec![leg, kinolab_script::value::number(tau)], at)
-            .map_err(|e| FieldError::new("sequencer", e.to_string()))?;
-        foot_answer(&call.value, at).map_err(|e| FieldError::new("sequencer", e.to_string()))
+        let call = script.call_pure(vec![leg, kinolab_script::value::number(tau)], at)?;
+        foot_answer(&call.value, at)
     }
 
     /// Where leg `i`'s foot should be at `tau`, body frame.
@@ -169,6 +176,19 @@ impl Walker {
     /// (the previous instant's values make the motion smooth).
     pub fn step(&self, tau: f64, seed: &[f64]) -> Result<Step, FieldError> {
         let tau = kinolab_common::error::finite("tau", tau)?.rem_euclid(1.0);
+        let plan = self
+            .plan(tau)
+            .map_err(|e| FieldError::new("sequencer", e.to_string()))?;
+        self.place(tau, &plan, seed)
+    }
+
+    /// The legs' inverse kinematics for `plan` at `tau`, from `seed`.
+    pub fn place(
+        &self,
+        tau: f64,
+        plan: &[(bool, Vector3<f64>)],
+        seed: &[f64],
+    ) -> Result<Step, FieldError> {
         let options = Options {
             max_iterations: 60,
             restarts: 2,
@@ -176,28 +196,21 @@ impl Walker {
             rotation_tolerance: 1e-9,
         };
         let mut q = seed.to_vec();
-        let mut targets = Vec::with_capacity(6);
         let mut errors = Vec::with_capacity(6);
         let mut unreachable = Vec::new();
-        let mut stance = Vec::with_capacity(6);
-        for (i, foot) in self.feet.iter().enumerate() {
-            let (down, target) = self.plan(i, tau)?;
-            stance.push(down);
-            let solution =
-                self.model
-                    .solve(&[Goal::new(*foot, Target::Position(target))], &q, &options)?;
+        for (i, (foot, (_, target))) in self.feet.iter().zip(plan).enumerate() {
+            let goal = Goal::new(*foot, Target::Position(*target));
+            let solution = self.model.solve(&[goal], &q, &options)?;
             q = solution.q;
-            targets.push([target.x, target.y, target.z]);
             errors.push(solution.position_error);
             if solution.position_error > REACHED {
                 unreachable.push(LEGS[i]);
             }
         }
-        let ground: Vec<crate::Point> = targets
+        let ground: Vec<crate::Point> = plan
             .iter()
-            .zip(&stance)
-            .filter(|(_, down)| **down)
-            .map(|(t, _)| [t[0], t[1]])
+            .filter(|(down, _)| *down)
+            .map(|(_, t)| [t.x, t.y])
             .collect();
         let margin = crate::static_stability(self.gait.com, &ground)
             .ok()
@@ -205,10 +218,10 @@ impl Walker {
         Ok(Step {
             tau,
             q,
-            targets,
+            targets: plan.iter().map(|(_, t)| [t.x, t.y, t.z]).collect(),
             errors,
             unreachable,
-            stance,
+            stance: plan.iter().map(|(down, _)| *down).collect(),
             margin,
         })
     }

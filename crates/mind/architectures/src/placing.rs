@@ -147,14 +147,16 @@ fn moved_goal(
         .filter(|c| grid.is_free(*c))
         .ok_or_else(|| FieldError::new("surprise", "the robot is not in a free cell"))?;
     let reachable = grid.distances_to(start);
-    let room = world.robot_radius + 0.2;
+    let room = world.robot_radius + 0.5;
     let mut best: Option<(f64, Vec2)> = None;
     for (index, d) in reachable.iter().enumerate() {
         if !d.is_finite() {
             continue;
         }
         let p = grid.centre(grid.cell_at(index));
-        let fits = (p - robot).norm() >= MOVED_GOAL_AWAY && world.obstacle_distance(p, t) >= room;
+        let fits = (p - robot).norm() >= MOVED_GOAL_AWAY
+            && world.obstacle_distance(p, t) >= room
+            && inside_by(world, p) >= room;
         let score = (p - goal).norm();
         if fits && best.is_none_or(|(s, _)| score > s + 1e-9) {
             best = Some((score, p));
@@ -170,6 +172,15 @@ fn moved_goal(
         to: [to.x, to.y],
         at: t,
     })
+}
+
+/// How far `p` is inside the world's bounds, m.
+fn inside_by(world: &World, p: Vec2) -> f64 {
+    let b = &world.bounds;
+    (p.x - b.x_min)
+        .min(b.x_max - p.x)
+        .min(p.y - b.y_min)
+        .min(b.y_max - p.y)
 }
 
 /// A point kept inside the world's bounds.

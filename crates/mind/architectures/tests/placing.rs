@@ -162,6 +162,18 @@ fn a_moved_goal_is_somewhere_else_the_robot_can_reach() {
 }
 
 #[test]
+fn the_hybrid_robot_reaches_a_moved_goal() {
+    // A goal squeezed against the world's edge would be out of reach.
+    for world in worlds() {
+        let moved = Placed::MovedGoal.place(&world, start(&world), 4.0).unwrap();
+        let mut setup = ArenaSetup::new(world.clone());
+        setup.surprises.push(moved.clone());
+        let report = kinolab_architectures::run::run(&setup, Architecture::Hybrid, 10).unwrap();
+        assert!(report.metrics.reached, "{}: {moved:?}", world.name);
+    }
+}
+
+#[test]
 fn every_placed_surprise_springs_in_a_running_arena() {
     for world in worlds() {
         let setup = ArenaSetup::new(world.clone());

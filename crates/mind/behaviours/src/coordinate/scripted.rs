@@ -77,9 +77,14 @@ fn choose(
 ) -> Result<Decision, ScriptError> {
     if let Some(name) = kinolab_script::value::text(value) {
         let i = r.index(&name).ok_or_else(|| {
+            let names: Vec<String> = r
+                .behaviours
+                .iter()
+                .map(|b| format!("\"{}\"", b.name))
+                .collect();
             ScriptError::shape(
                 COORDINATE,
-                "the name of one of the behaviours",
+                &format!("the name of one of the behaviours ({})", names.join(", ")),
                 &format!("\"{name}\""),
                 t,
             )

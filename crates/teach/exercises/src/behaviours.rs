@@ -1,0 +1,206 @@
+//! Behaviours: the learner's behaviour `behave(p)`, or their coordinator
+//! `coordinate(outputs, p)` over the library's behaviours, run in the
+//! behaviour arena's simulation.
+
+use kinolab_behaviours::coordinate::Coordinator;
+use kinolab_behaviours::library::{Behaviour, Named};
+use kinolab_behaviours::run::{Setup, run as simulate};
+use kinolab_common::display::fixed;
+use kinolab_world::{EventKind, World};
+
+use crate::{Exercise, Hook, Outcome, World as Graded};
+
+/// One run: the world, the library's behaviours (a coordinator exercise
+/// coordinates them; a behaviour exercise runs the learner's alone) and
+/// what counts as success.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trial {
+    pub world: World,
+    pub library: Vec<Named>,
+    pub duration: f64,
+    pub seed: u64,
+    /// The goal must be reached.
+    pub reach_goal: bool,
+    /// The least distance driven, m (exploring).
+    pub min_path: f64,
+}
+
+/// The learner's behaviour's name in the run.
+pub const MINE: &str = "mine";
+
+const WANDER_STARTER: &str = r#"// p.rays: each #{angle, range, hit} (rad, m, robot frame; angle 0 is ahead)
+// p.bumpers: #{front, left, back, right}; p.t: the time, s
+// Answer [v, omega] (m/s, rad/s), #{x, y} (a velocity, m/s) or ().
+fn behave(p) {
+    [0.2, 0.0]
+}
+"#;
+
+const COORDINATE_STARTER: &str = r#"// outputs.go and outputs.avoid: what each library behaviour wants now,
+// #{x, y} (a velocity, m/s), or () when it does not want to act.
+// Answer the name of the behaviour that drives ("go" or "avoid"),
+// or a command of your own: [v, omega] or #{x, y}.
+fn coordinate(outputs, p) {
+    "go"
+}
+"#;
+
+pub const EXERCISES: [Exercise; 2] = [
+    Exercise {
+        id: "behaviour-explore",
+        unit: "behaviours",
+        lesson: "behaviours/what-a-behaviour-is",
+        hook: Hook::Behaviour,
+        signature: kinolab_behaviours::script::BEHAVE,
+        title: "Explore without touching anything",
+        task: "Write one behaviour that keeps the robot moving for 40 s, driving at least 6 m in all, without ever touching a wall or an obstacle.",
+        starter: WANDER_STARTER,
+        hints: &[
+            "Look at the rays in front of the robot: the ones whose angle is near 0.",
+            "When the nearest thing ahead is closer than about half a metre, stop driving forward and turn.",
+            "Turn away from the side where the rays are shorter, and keep turning until the way ahead is clear.",
+        ],
+        worlds: explore,
+    },
+    Exercise {
+        id: "behaviour-coordinate",
+        unit: "behaviours",
+        lesson: "behaviours/coordination",
+        hook: Hook::Coordinator,
+        signature: kinolab_behaviours::script::COORDINATE,
+        title: "Choose who drives",
+        task: "Two library behaviours run side by side: `go` heads for the goal and `avoid` pushes away from anything within 0.7 m. Write the coordinator that gets the robot to the goal in 40 s without touching anything.",
+        starter: COORDINATE_STARTER,
+        hints: &[
+            "A coordinator that always lets `go` drive runs into the first obstacle in the way.",
+            "`avoid` answers () when nothing is near: use that to decide who drives.",
+            "Choosing is not the only way: you may add the two vectors and answer the sum.",
+        ],
+        worlds: coordinate,
+    },
+];
+
+fn graded(name: &str, visible: bool, trial: Trial) -> Graded {
+    Graded {
+        name: name.into(),
+        visible,
+        trial: crate::Trial::Behaviours(trial),
+    }
+}
+
+fn example(id: &str) -> World {
+    kinolab_world::catalogue::world(id)
+        .unwrap_or_else(|_| kinolab_world::catalogue::scattered(0, 0))
+}
+
+fn explore() -> Vec<Graded> {
+    let t = |world: World, seed| Trial {
+        world,
+        library: Vec::new(),
+        duration: 40.0,
+        seed,
+        reach_goal: false,
+        min_path: 6.0,
+    };
+    vec![
+        graded("scattered obstacles", true, t(example("scattered"), 1)),
+        graded("two rooms", true, t(example("two-rooms"), 2)),
+        graded("a corridor", false, t(example("corridor"), 3)),
+        graded("a U-shaped trap", false, t(example("u-trap"), 4)),
+        graded(
+            "nine discs",
+            false,
+            t(kinolab_world::catalogue::scattered(7, 9), 5),
+        ),
+    ]
+}
+
+/// `go` (gain 0.4) and `avoid` (within 0.7 m, gain 0.4).
+pub fn go_and_avoid() -> Vec<Named> {
+    vec![
+        Named::new(
+            "go",
+            Behaviour::GoToGoal {
+                gain: 0.4,
+                slow_within: 0.5,
+            },
+        ),
+        Named::new(
+            "avoid",
+            Behaviour::Avoid {
+                range: 0.7,
+                gain: 0.4,
+            },
+        ),
+    ]
+}
+
+fn coordinate() -> Vec<Graded> {
+    let t = |seed: u64, count| Trial {
+        world: kinolab_world::catalogue::scattered(seed, count),
+        library: go_and_avoid(),
+        duration: 40.0,
+        seed,
+        reach_goal: true,
+        min_path: 0.0,
+    };
+    vec![
+        graded("six discs", true, t(1, 6)),
+        graded("ten discs", true, t(2, 10)),
+        graded("twelve discs", false, t(5, 12)),
+        graded("eight discs", false, t(6, 8)),
+        graded("ten other discs", false, t(9, 10)),
+    ]
+}
+
+/// The run set up for `source` on `t`.
+pub fn setup(hook: Hook, source: &str, t: &Trial) -> Setup {
+    let source = source.to_owned();
+    let (behaviours, coordinator) = if hook == Hook::Coordinator {
+        (t.library.clone(), Coordinator::Script { source })
+    } else {
+        let mut all = t.library.clone();
+        all.push(Named::new(MINE, Behaviour::Script { source }));
+        let gains = Default::default();
+        (all, Coordinator::Sum { gains })
+    };
+    let mut s = Setup::new(t.world.clone(), behaviours, coordinator);
+    s.duration = t.duration;
+    s.seed = t.seed;
+    s.stop_at_goal = t.reach_goal;
+    s
+}
+
+pub(crate) fn run(hook: Hook, source: &str, world: &Graded, t: &Trial) -> Outcome {
+    let mut out = Outcome::new(world);
+    let report = match simulate(&setup(hook, source, t)) {
+        Ok(r) => r,
+        Err(e) => return out.judged(Some(format!("the run could not start: {e}"))),
+    };
+    let m = &report.metrics;
+    out.error = report.error.clone();
+    out.time = report.samples.last().map(|s| s.motion.t);
+    out = out
+        .metric("path_length", m.path_length)
+        .metric("min_clearance", m.min_clearance)
+        .metric("collisions", m.collisions as f64);
+    let bump = report
+        .events
+        .iter()
+        .find(|e| matches!(e.kind, EventKind::Bump { .. }));
+    let reason = if let Some(b) = bump {
+        out.time = Some(b.t);
+        Some(format!("touched an obstacle at {} s", fixed(b.t, 1)))
+    } else if t.reach_goal && !m.reached {
+        Some(format!("not at the goal after {} s", fixed(t.duration, 0)))
+    } else if m.path_length < t.min_path {
+        Some(format!(
+            "drove only {} m of the {} m asked",
+            fixed(m.path_length, 1),
+            fixed(t.min_path, 0)
+        ))
+    } else {
+        None
+    };
+    out.judged(reason)
+}
