@@ -35,6 +35,7 @@ fn every_saved_run_reproduces_the_widgets_numbers() {
 
 /// `name`'s saved run, through the command line.
 fn reproduces(name: &str, dir: &std::path::Path) {
+    std::fs::create_dir_all(dir).unwrap();
     {
         let mut widget = create(&spec(name, &[])).unwrap();
         widget.seek(1.5);

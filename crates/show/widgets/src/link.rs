@@ -89,6 +89,11 @@ pub fn write<T: Serialize + PartialEq, E: Serialize>(
     if !moment.events.is_empty() {
         lines += &format!("@events: {}\n", serde_json::to_string(&moment.events).ok()?);
     }
+    if lines.is_empty() {
+        // Settings that are the schema's defaults, at the start: still a
+        // line, so that an empty link is never a state.
+        lines += "@t: 0\n";
+    }
     let mut text = String::from(SETTINGS);
     URL_SAFE_NO_PAD.encode_string(lines.as_bytes(), &mut text);
     (text.len() <= MAX_LEN).then_some(text)
@@ -110,6 +115,9 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
         .decode(body)
         .map_err(|_| "it is damaged (cut short or altered)".to_owned())?;
     let lines = String::from_utf8(bytes).map_err(|_| "it is damaged (not text)".to_owned())?;
+    if lines.trim().is_empty() {
+        return Err("it is empty".into());
+    }
     let mut params = Vec::new();
     let mut moment = Moment::default();
     for line in lines.lines() {
@@ -211,6 +219,10 @@ mod tests {
         assert_eq!((back, m), (Legs { legs: 6 }, moment));
     }
 
+    fn none_moment() -> Moment<String> {
+        Moment::default()
+    }
+
     #[test]
     fn damaged_settings_say_what_is_wrong() {
         let encode = |lines: &str| format!("b{}", URL_SAFE_NO_PAD.encode(lines));
@@ -231,9 +243,21 @@ mod tests {
         assert!(read_legs("a!!!").is_err());
         assert!(read_legs(&format!("b{}", "A".repeat(MAX_LEN))).is_err());
         assert_eq!(
-            read_legs(&encode("")),
+            read_legs(&encode("@t: 0\n")),
             Ok(Legs { legs: 2 }),
             "the schema's default"
+        );
+        assert!(read_legs(&encode("")).is_err(), "an empty link");
+        let text = write(
+            "leg-events",
+            &Legs { legs: 2 },
+            &Legs { legs: 6 },
+            &none_moment(),
+        );
+        assert_eq!(
+            text.as_deref().map(read_legs),
+            Some(Ok(Legs { legs: 2 })),
+            "the defaults, written"
         );
     }
 

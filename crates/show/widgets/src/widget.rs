@@ -59,15 +59,21 @@ impl SavedRun {
 }
 
 /// The range a parameter of the widget `widget` allows (its schema's
-/// `Number` or `Integer` kind): sliders take it from here, so a range is
-/// written only in the schema.
+/// `Number` or `Integer` kind, or each number of a `Numbers` or `Groups`
+/// kind): sliders take it from here, so a range is written only in the
+/// schema.
 pub fn range(widget: &str, param: &str) -> std::ops::RangeInclusive<f64> {
+    use kinolab_schema::Kind;
     match kinolab_schema::find(widget)
         .and_then(|w| w.param(param))
         .map(|p| &p.kind)
     {
-        Some(kinolab_schema::Kind::Number { min, max }) => *min..=*max,
-        Some(kinolab_schema::Kind::Integer { min, max }) => (*min as f64)..=(*max as f64),
+        Some(
+            Kind::Number { min, max }
+            | Kind::Numbers { min, max, .. }
+            | Kind::Groups { min, max, .. },
+        ) => *min..=*max,
+        Some(Kind::Integer { min, max }) => (*min as f64)..=(*max as f64),
         _ => 0.0..=1.0,
     }
 }
