@@ -19,7 +19,7 @@ pub mod catalogue;
 pub mod descend;
 pub mod exercise;
 mod field;
-mod file;
+pub mod file;
 pub mod minima;
 pub mod primitive;
 pub mod remedy;
