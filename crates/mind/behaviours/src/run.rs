@@ -37,6 +37,35 @@ struct RunFile {
     stop_at_goal: bool,
     #[serde(default = "kinolab_common::defaults::one")]
     output_every: usize,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    script: Vec<Change>,
+}
+
+/// A change made to a run while it goes, as a learner makes it in the lab
+/// (a light dragged, a vehicle rewired): at `at` seconds, before the first
+/// step that starts then or later.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "do", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Change {
+    /// Light `light` (its index in the world's `lights`) moves to (`x`, `y`).
+    MoveLight {
+        at: f64,
+        light: usize,
+        x: f64,
+        y: f64,
+    },
+    /// The behaviour called `behaviour.name` becomes `behaviour` (its
+    /// state starts afresh).
+    ReplaceBehaviour { at: f64, behaviour: Named },
+}
+
+impl Change {
+    /// When it happens, s.
+    pub fn at(&self) -> f64 {
+        match self {
+            Change::MoveLight { at, .. } | Change::ReplaceBehaviour { at, .. } => *at,
+        }
+    }
 }
 
 fn default_heading_gain() -> f64 {
@@ -66,6 +95,8 @@ pub struct Setup {
     pub stop_at_goal: bool,
     /// Keep one sample in this many steps.
     pub output_every: usize,
+    /// Changes made while it runs, in time order.
+    pub script: Vec<Change>,
 }
 
 /// The sensors a robot carries unless a run says otherwise: 16 rays over
@@ -104,6 +135,7 @@ impl Setup {
             heading_gain: default_heading_gain(),
             stop_at_goal: true,
             output_every: 1,
+            script: Vec::new(),
         }
     }
 
@@ -130,6 +162,7 @@ impl Setup {
             heading_gain: file.heading_gain,
             stop_at_goal: file.stop_at_goal,
             output_every: file.output_every,
+            script: file.script,
         };
         setup.check()?;
         Ok(setup)
@@ -151,6 +184,7 @@ impl Setup {
             heading_gain: self.heading_gain,
             stop_at_goal: self.stop_at_goal,
             output_every: self.output_every,
+            script: self.script.clone(),
         };
         serde_json::to_string_pretty(&file).unwrap_or_default()
     }
@@ -193,7 +227,49 @@ impl Setup {
         }
         self.coordinator
             .check(&names)
-            .map_err(|e| e.within("coordinator"))
+            .map_err(|e| e.within("coordinator"))?;
+        let mut last = 0.0;
+        for (i, change) in self.script.iter().enumerate() {
+            self.check_change(change, last)
+                .map_err(|e| e.within(&format!("script[{i}]")))?;
+            last = change.at();
+        }
+        Ok(())
+    }
+
+    /// One change of the script, which may not come before `after`.
+    fn check_change(&self, change: &Change, after: f64) -> Result<(), FieldError> {
+        in_range("at", change.at(), after, self.duration)?;
+        match change {
+            Change::MoveLight { light, x, y, .. } => {
+                if *light >= self.world.lights.len() {
+                    return Err(FieldError::new(
+                        "light",
+                        format!("the world has {} lights", self.world.lights.len()),
+                    ));
+                }
+                kinolab_common::error::finite("x", *x)?;
+                kinolab_common::error::finite("y", *y).map(|_| ())
+            }
+            Change::ReplaceBehaviour { behaviour, .. } => {
+                if !self.behaviours.iter().any(|b| b.name == behaviour.name) {
+                    return Err(FieldError::new(
+                        "behaviour.name",
+                        format!("no behaviour is called `{}`", behaviour.name),
+                    ));
+                }
+                behaviour.check().map_err(|e| e.within("behaviour"))?;
+                if matches!(behaviour.behaviour, crate::Behaviour::Braitenberg(_))
+                    && self.body.holonomic()
+                {
+                    return Err(FieldError::new(
+                        "behaviour",
+                        "a Braitenberg vehicle needs a differential robot",
+                    ));
+                }
+                Ok(())
+            }
+        }
     }
 }
 
@@ -227,6 +303,8 @@ pub struct Runner {
     pub stop_at_goal: bool,
     /// The error that stopped a learner's script, and with it the run.
     pub error: Option<kinolab_script::ScriptError>,
+    /// The set-up's changes still to come.
+    script: std::collections::VecDeque<Change>,
 }
 
 impl Runner {
@@ -253,7 +331,39 @@ impl Runner {
             duration: setup.duration,
             stop_at_goal: setup.stop_at_goal,
             error: None,
+            script: setup.script.iter().cloned().collect(),
         })
+    }
+    /// Make `change` now (whatever its time says).
+    pub fn apply(&mut self, change: &Change) {
+        match change {
+            Change::MoveLight { light, x, y, .. } => {
+                if let Some(l) = self.sim.world.lights.get_mut(*light) {
+                    l.x = *x;
+                    l.y = *y;
+                }
+            }
+            Change::ReplaceBehaviour { behaviour, .. } => {
+                if let Some(b) = self
+                    .behaviours
+                    .iter_mut()
+                    .find(|b| b.name == behaviour.name)
+                {
+                    *b = behaviour.clone();
+                    b.reset();
+                }
+            }
+        }
+    }
+
+    /// Make the script's changes that are due before the next step.
+    fn apply_due(&mut self) {
+        let now = self.sim.time + self.sim.dt / 2.0;
+        while self.script.front().is_some_and(|c| c.at() <= now) {
+            if let Some(change) = self.script.pop_front() {
+                self.apply(&change);
+            }
+        }
     }
 
     /// Whether the run is over: out of time, at the goal when it should
@@ -286,6 +396,7 @@ impl Runner {
 
     /// Sense, let every behaviour respond, coordinate, and move.
     pub fn step(&mut self) -> Frame {
+        self.apply_due();
         let percepts = self.sim.sense();
         let responses: Vec<Option<Response>> = self
             .behaviours

@@ -189,3 +189,60 @@ fn the_layer_exercise_is_graded_by_running_it() {
     let f = task.check(&["avoid".into(), "go".into()], None).unwrap();
     assert!(!f.met, "{}", f.message);
 }
+
+/// A script's changes land exactly where a learner made them: the same
+/// run as a runner changed by hand after as many steps, and written into
+/// the run file and read back.
+#[test]
+fn a_script_replays_changes_made_by_hand() {
+    use kinolab_behaviours::run::Change;
+    let mut by_hand = vehicle(Character::Love, 0.4, 2.5);
+    let mut setup = Setup::new(
+        by_hand.sim.world.clone(),
+        by_hand.behaviours.clone(),
+        by_hand.coordinator.clone(),
+    );
+    setup.stop_at_goal = false;
+    let mut poses = Vec::new();
+    let mut script = Vec::new();
+    for k in 0..200 {
+        if k == 40 {
+            let change = Change::MoveLight {
+                at: by_hand.sim.time,
+                light: 0,
+                x: -1.0,
+                y: 2.0,
+            };
+            by_hand.apply(&change);
+            script.push(change);
+        }
+        if k == 90 {
+            let change = Change::ReplaceBehaviour {
+                at: by_hand.sim.time,
+                behaviour: Named::new("love", Behaviour::Braitenberg(Character::Explorer.wiring())),
+            };
+            by_hand.apply(&change);
+            script.push(change);
+        }
+        poses.push(by_hand.step().pose);
+    }
+    setup.script = script;
+    let setup = Setup::from_json(&setup.to_json()).unwrap();
+    let mut scripted = Runner::new(&setup).unwrap();
+    let replayed: Vec<Pose> = (0..200).map(|_| scripted.step().pose).collect();
+    assert_eq!(replayed, poses);
+    let report = run(&setup).unwrap();
+    assert_eq!(report.samples[200].motion.x, poses[199].x);
+    // Out of order, or naming what is not there: refused by field.
+    let mut bad = setup.clone();
+    bad.script.reverse();
+    assert!(bad.check().unwrap_err().field.starts_with("script[1].at"));
+    let mut bad = setup.clone();
+    bad.script[0] = Change::MoveLight {
+        at: 1.0,
+        light: 3,
+        x: 0.0,
+        y: 0.0,
+    };
+    assert_eq!(bad.check().unwrap_err().field, "script[0].light");
+}

@@ -1,4 +1,5 @@
-//! Field files, as the command-line contract writes them.
+//! Field files, as the command-line contract writes them, and their
+//! fields on one line, as a lesson (or a link) writes them.
 
 use kinolab_common::error::from_json;
 use serde::{Deserialize, Serialize};
@@ -26,9 +27,10 @@ struct Point {
     y: f64,
 }
 
+/// A field's kind, as field files name it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
-enum Kind {
+pub enum Kind {
     Uniform,
     Attractive,
     Repulsive,
@@ -38,45 +40,48 @@ enum Kind {
     Script,
 }
 
+/// A field's profile, as field files name it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
-enum ProfileName {
+pub enum ProfileName {
     Constant,
     Linear,
     Exponential,
     Potential,
 }
 
-#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+/// One entry of a field file's `fields`, as written (every number as the
+/// file gives it, so a field written and read back is the same field).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Entry {
-    kind: Option<Kind>,
+pub struct Entry {
+    pub kind: Option<Kind>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    x: Option<f64>,
+    pub x: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    y: Option<f64>,
+    pub y: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    radius: Option<f64>,
+    pub radius: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    direction_deg: Option<f64>,
+    pub direction_deg: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    from: Option<[f64; 2]>,
+    pub from: Option<[f64; 2]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    to: Option<[f64; 2]>,
+    pub to: Option<[f64; 2]>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    gain: Option<f64>,
+    pub gain: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    profile: Option<ProfileName>,
+    pub profile: Option<ProfileName>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    range: Option<f64>,
+    pub range: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    lambda: Option<f64>,
+    pub lambda: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    spin: Option<Spin>,
+    pub spin: Option<Spin>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    sense: Option<Sense>,
+    pub sense: Option<Sense>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    source: Option<String>,
+    pub source: Option<String>,
 }
 
 /// A script entry read as a built-in primitive.
@@ -114,7 +119,8 @@ impl Entry {
         crate::custom::Custom::new(source).map_err(|e| FieldError::new("source", e.to_string()))
     }
 
-    fn primitive(&self) -> Result<Primitive, FieldError> {
+    /// The primitive this entry makes, checked; errors name the field.
+    pub fn primitive(&self) -> Result<Primitive, FieldError> {
         if self.source.is_some() {
             return Err(FieldError::new("source", "only a `script` field has code"));
         }
@@ -189,7 +195,8 @@ impl Entry {
         Primitive::new(source, self.gain.unwrap_or(1.0), profile, self.range)
     }
 
-    fn from_primitive(p: &Primitive) -> Self {
+    /// The entry a field file writes for `p`.
+    pub fn from_primitive(p: &Primitive) -> Self {
         let mut e = Entry {
             gain: Some(p.gain),
             range: p.range,
@@ -243,6 +250,125 @@ impl Entry {
         }
         e
     }
+}
+
+/// A field file with these entries, pretty-printed: the same text the
+/// command line reads.
+pub fn write(name: &str, goal: Option<[f64; 2]>, entries: &[Entry]) -> String {
+    let file = FieldFile {
+        name: name.to_owned(),
+        goal: goal.map(|[x, y]| Point { x, y }),
+        fields: entries.to_vec(),
+    };
+    serde_json::to_string_pretty(&file).unwrap_or_default()
+}
+
+/// A field file's goal and entries, as written (not yet checked).
+pub fn entries(text: &str) -> Result<(Option<[f64; 2]>, Vec<Entry>), FieldError> {
+    let file: FieldFile = from_json(text)?;
+    Ok((file.goal.map(|g| [g.x, g.y]), file.fields))
+}
+
+/// The keys of an entry on a line, in the order [`line`] writes them.
+const KEYS: [&str; 12] = [
+    "x",
+    "y",
+    "from",
+    "to",
+    "radius",
+    "direction_deg",
+    "gain",
+    "profile",
+    "lambda",
+    "range",
+    "spin",
+    "sense",
+];
+
+/// Entries on one line: each its kind and then `key value` pairs with a
+/// field file's keys (`from` and `to` as `x,y`), entries separated by `;`:
+/// `attractive x 4 y 0 gain 1 profile linear range 1; uniform direction_deg 90 gain 0.2`.
+pub fn line(entries: &[Entry]) -> String {
+    entries
+        .iter()
+        .map(|e| {
+            let json = serde_json::to_value(e).unwrap_or_default();
+            let mut words = vec![word(json.get("kind"))];
+            for key in KEYS {
+                if let Some(value) = json.get(key) {
+                    words.push(key.to_owned());
+                    words.push(word(Some(value)));
+                }
+            }
+            words.join(" ")
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// One value as a line writes it.
+fn word(value: Option<&serde_json::Value>) -> String {
+    match value {
+        Some(serde_json::Value::String(s)) => s.clone(),
+        Some(serde_json::Value::Array(xy)) => xy
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(","),
+        Some(v) => v.to_string(),
+        None => String::new(),
+    }
+}
+
+/// Read entries written by [`line`]; each is checked as a field file's
+/// would be. Errors say which entry and what is wrong.
+pub fn from_line(text: &str) -> Result<Vec<Entry>, String> {
+    text.split(';')
+        .filter(|e| !e.trim().is_empty())
+        .enumerate()
+        .map(|(i, e)| entry(e).map_err(|m| format!("has field {}: {m}", i + 1)))
+        .collect()
+}
+
+/// One entry of a line, checked.
+fn entry(text: &str) -> Result<Entry, String> {
+    let mut words = text.split_whitespace();
+    let mut object = serde_json::Map::new();
+    let kind = words.next().unwrap_or_default();
+    object.insert("kind".into(), kind.into());
+    while let Some(key) = words.next() {
+        if !KEYS.contains(&key) {
+            return Err(format!("`{key}` is not one of {}", KEYS.join(", ")));
+        }
+        let value = words
+            .next()
+            .ok_or_else(|| format!("`{key}` has no value"))?;
+        let number = |v: &str| {
+            v.parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .and_then(serde_json::Number::from_f64)
+                .ok_or_else(|| format!("`{key}` must be a number, found `{v}`"))
+        };
+        let json = match key {
+            "profile" | "spin" | "sense" => serde_json::Value::from(value),
+            "from" | "to" => {
+                let xy: Vec<&str> = value.split(',').collect();
+                let [x, y] = xy.as_slice() else {
+                    return Err(format!("`{key}` must be x,y, found `{value}`"));
+                };
+                serde_json::json!([number(x)?, number(y)?])
+            }
+            _ => serde_json::Value::Number(number(value)?),
+        };
+        if object.insert(key.to_owned(), json).is_some() {
+            return Err(format!("`{key}` is given twice"));
+        }
+    }
+    let e: Entry = serde_json::from_value(serde_json::Value::Object(object))
+        .map_err(|_| format!("`{text}` is not a field (a kind, then keys and values)"))?;
+    e.primitive().map_err(|err| err.to_string())?;
+    Ok(e)
 }
 
 impl Field {
@@ -315,6 +441,39 @@ mod tests {
         assert_eq!(f.primitives.len(), 5);
         assert_eq!(f.goal, Some(Vec2::new(4.0, 0.0)));
         assert_eq!(Field::from_json(&f.to_json()).unwrap(), f);
+    }
+
+    #[test]
+    fn fields_on_a_line_read_back_as_written() {
+        let file: FieldFile = serde_json::from_str(CONTRACT).unwrap();
+        let text = line(&file.fields);
+        assert!(
+            text.starts_with("attractive x 4.0 y 0.0 gain 1.0 profile linear range 1.0; "),
+            "{text}"
+        );
+        assert!(
+            text.contains("perpendicular from 0.0,-1.0 to 5.0,-1.0"),
+            "{text}"
+        );
+        let back = from_line(&text).unwrap();
+        assert_eq!(back, file.fields);
+        let again = write("goal-behind-a-rock", Some([4.0, 0.0]), &back);
+        assert_eq!(
+            Field::from_json(&again).unwrap(),
+            Field::from_json(CONTRACT).unwrap()
+        );
+        for (bad, says) in [
+            ("vortex x 1 y 1", "not a field"),
+            ("attractive x 1 y", "has no value"),
+            ("attractive x 1 x 2 y 0", "twice"),
+            ("attractive x 1 y 0 colour red", "not one of"),
+            ("repulsive x 1 y 0 radius -1 range 1", "radius"),
+            ("perpendicular from 1 to 2,2", "x,y"),
+            ("uniform direction_deg NaN", "number"),
+        ] {
+            let e = from_line(bad).unwrap_err();
+            assert!(e.contains(says), "{bad}: {e}");
+        }
     }
 
     #[test]

@@ -20,7 +20,7 @@ pub mod custom;
 pub mod descend;
 pub mod exercise;
 mod field;
-mod file;
+pub mod file;
 pub mod minima;
 pub mod primitive;
 pub mod remedy;

@@ -59,7 +59,7 @@ impl SavedRun {
 }
 
 /// The range a parameter of the widget `widget` allows (its schema's
-/// `Number` or `Integer` kind, or each number's of a `Numbers` or `Groups`
+/// `Number` or `Integer` kind, or each number of a `Numbers` or `Groups`
 /// kind): sliders take it from here, so a range is written only in the
 /// schema.
 pub fn range(widget: &str, param: &str) -> std::ops::RangeInclusive<f64> {

@@ -7,42 +7,56 @@ use kinolab_world::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::draw::{PlaneView, canvas, corner_text, handle};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
 use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
 
+/// The widget's name in the schema.
+const NAME: &str = "blend-or-choose";
+
+/// What the lesson sets and a link carries: where the flies are.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Flies {
+struct Settings {
+    flies: [[f64; 2]; 2],
+}
+
+/// The links of the first format: the flies.
+#[derive(Deserialize)]
+struct Legacy {
     at: [[f64; 2]; 2],
 }
 
 struct Frog {
-    flies: Flies,
-    initial: Flies,
+    settings: Settings,
+    initial: Settings,
 }
 
 /// The frog sits at the bottom middle of a 1 m × 0.7 m pond.
 const FROG: [f64; 2] = [0.0, 0.0];
 const POND: ([f64; 2], [f64; 2]) = ([-0.5, -0.08], [0.5, 0.62]);
 
-pub fn create(_: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let flies = Flies {
-        at: [[-0.3, 0.4], [0.32, 0.42]],
-    };
+/// Flies stay this far above the frog, m.
+const LOWEST_FLY: f64 = 0.1;
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let settings: Settings = p.settings()?;
     Ok(Box::new(Frog {
-        initial: flies.clone(),
-        flies,
+        initial: settings.clone(),
+        settings,
     }))
 }
 
 impl Frog {
-    fn scene(&mut self, ui: &mut egui::Ui, how: Combine, width: f32, id: &str) {
+    /// One pond; returns where it is on screen.
+    fn scene(&mut self, ui: &mut egui::Ui, how: Combine, width: f32, id: &str) -> egui::Rect {
         let (response, painter) = canvas(ui, vec2(width, width * 0.7), Sense::hover());
         let rect = response.rect;
         let view = PlaneView::fit(rect.shrink(6.0), POND.0, POND.1);
         let ink = ui.visuals().text_color();
         let flies: Vec<Vec2> = self
+            .settings
             .flies
-            .at
             .iter()
             .map(|f| Vec2::new(f[0], f[1]))
             .collect();
@@ -83,7 +97,7 @@ impl Frog {
         }
         let base = ui.scope_id().with(id);
         for i in 0..2 {
-            let f = self.flies.at[i];
+            let f = self.settings.flies[i];
             let h = handle(
                 ui,
                 base.with(i),
@@ -92,7 +106,10 @@ impl Frog {
                 &format!("Fly {}", i + 1),
             );
             if let Some([x, y]) = h.dragged_to(&view, f) {
-                self.flies.at[i] = [x.clamp(POND.0[0], POND.1[0]), y.clamp(0.1, POND.1[1])];
+                self.settings.flies[i] = [
+                    x.clamp(POND.0[0], POND.1[0]),
+                    y.clamp(LOWEST_FLY, POND.1[1]),
+                ];
             }
         }
         let verdict = match (how, s.and_then(|s| s.caught)) {
@@ -106,6 +123,7 @@ impl Frog {
             (Combine::Choose, None) => "Choose: missed.".to_owned(),
         };
         corner_text(&painter, rect, 0, verdict, ink);
+        rect
     }
 }
 
@@ -117,33 +135,92 @@ impl LabWidget for Frog {
         } else {
             ui.available_width()
         };
-        if wide {
+        let ponds = if wide {
             ui.horizontal_top(|ui| {
-                self.scene(ui, Combine::Blend, w, "blend");
-                self.scene(ui, Combine::Choose, w, "choose");
-            });
+                let a = self.scene(ui, Combine::Blend, w, "blend");
+                a.union(self.scene(ui, Combine::Choose, w, "choose"))
+            })
+            .inner
         } else {
-            self.scene(ui, Combine::Blend, w, "blend");
-            self.scene(ui, Combine::Choose, w, "choose");
-        }
+            let a = self.scene(ui, Combine::Blend, w, "blend");
+            a.union(self.scene(ui, Combine::Choose, w, "choose"))
+        };
         ui.label(
             RichText::new(
                 "Drag either fly (in either pond). Thin arrows: each fly's pull; red: the tongue.",
             )
             .small(),
         );
+        export::bar(
+            ui,
+            ui.scope_id().with("frog-exports"),
+            &[Export::Png {
+                file: "kinolab-blend-or-choose.png",
+                rect: ponds,
+            }],
+        );
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.flies, &self.initial)
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(f) = link::decode::<Flies>(state)
-            && f.at.iter().flatten().all(|v| v.is_finite())
-        {
-            self.flies = f;
-        }
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => Settings { flies: old.at },
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        self.settings = settings;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::{create, spec};
+
+    fn frog(params: &[(&str, &str)]) -> Frog {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        Frog {
+            initial: settings.clone(),
+            settings,
+        }
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = link::encode(&((-0.2_f64, 0.3_f64), (0.25_f64, 0.5_f64))).unwrap_or_default();
+        let mut w = frog(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(w.settings.flies, [[-0.2, 0.3], [0.25, 0.5]]);
+        // Off the pond: refused, the lesson's flies kept.
+        let bad = link::encode(&((-0.2_f64, 0.3_f64), (4.0_f64, 0.5_f64))).unwrap_or_default();
+        let mut w = frog(&[("flies", "0.1, 0.2; 0.3, 0.4")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.flies, [[0.1, 0.2], [0.3, 0.4]]);
+        assert!(create(&spec(NAME, &[])).is_ok());
+    }
+
+    #[test]
+    fn moved_flies_travel_in_the_link() {
+        let mut w = frog(&[]);
+        assert_eq!(w.state(), None, "as the lesson set it");
+        w.settings.flies[1] = [0.05, 0.6];
+        let text = w.state().unwrap_or_default();
+        let mut again = frog(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
     }
 }

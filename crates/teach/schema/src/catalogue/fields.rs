@@ -4,6 +4,36 @@ use crate::{Catalogue, Kind, Params, WidgetSchema};
 
 use super::{YES_NO, param};
 
+/// A point in m.
+const POINT: Kind = Kind::Numbers {
+    min_count: 2,
+    max_count: 2,
+    min: -100.0,
+    max: 100.0,
+};
+
+/// The remedies whose paths the sandbox can draw, in its order.
+pub const PATHS: [&str; 5] = [
+    "noise",
+    "avoid-past",
+    "templates",
+    "wall-following",
+    "wavefront",
+];
+
+fn check_fields(text: &str) -> Result<(), String> {
+    kinolab_fields::file::from_line(text).map(|_| ())
+}
+
+fn check_paths(text: &str) -> Result<(), String> {
+    for word in text.split(',').map(str::trim) {
+        if !PATHS.contains(&word) {
+            return Err(format!("has `{word}`: the paths are {}", PATHS.join(", ")));
+        }
+    }
+    Ok(())
+}
+
 pub(crate) static WIDGETS: &[WidgetSchema] = &[WidgetSchema {
     name: "field-sandbox",
     summary: "paint a potential field with the five primitives; find its minima; follow it; try the remedies",
@@ -61,8 +91,38 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[WidgetSchema {
                 min: 0.05,
                 max: 2.0,
             },
-            None,
+            Some("0.3"),
             "how far from the wall the robot must stop in `task: stand-off` (m)",
+        ),
+        param(
+            "fields",
+            Kind::Text {
+                example: "attractive x 4 y 0 gain 1 profile linear range 1; repulsive x 2 y 0 radius 0.3 gain 2 profile linear range 1",
+                check: check_fields,
+            },
+            None,
+            "the primitives, `;`-separated, each its kind and then a field file's keys and values (`from` and `to` as `x,y`); the preset's when left out",
+        ),
+        param(
+            "goal",
+            POINT,
+            None,
+            "where the goal is (x, y in m); the preset's when left out",
+        ),
+        param(
+            "start",
+            POINT,
+            None,
+            "where the robot starts (x, y in m); the preset's start when left out",
+        ),
+        param(
+            "paths",
+            Kind::Text {
+                example: "noise, wavefront",
+                check: check_paths,
+            },
+            None,
+            "which remedies' paths are drawn, comma-separated: noise, avoid-past, templates, wall-following, wavefront; none when left out",
         ),
     ],
     rules: Some(sandbox_rules),
@@ -80,10 +140,21 @@ fn sandbox_rules(p: &Params) -> Result<(), String> {
         return Err("`clearance` goes with `task: stand-off`".into());
     }
     let preset = p.choice("preset").unwrap_or("goal-behind-a-rock");
-    let field = kinolab_fields::catalogue::preset(preset)
+    let mut field = kinolab_fields::catalogue::preset(preset)
         .ok_or_else(|| format!("no field preset `{preset}`"))?
         .field()
         .map_err(|e| e.to_string())?;
+    if let Some(text) = p.text("fields") {
+        field.primitives = kinolab_fields::file::from_line(text)?
+            .iter()
+            .map(|e| e.primitive().map_err(|e| e.to_string()))
+            .collect::<Result<_, _>>()?;
+    }
+    if p.given("goal") {
+        field.goal = p
+            .numbers("goal")
+            .map(|g| kinolab_fields::Vec2::new(g[0], g[1]));
+    }
     if task == Some("stand-off")
         && !field
             .primitives

@@ -4,7 +4,7 @@
 use egui::{Sense, Stroke, vec2};
 use kinolab_world::Vec2;
 
-use super::Arena;
+use super::{Arena, Shown};
 use crate::behaviour::world_view::{color, draw_robot, draw_trail, draw_world};
 use crate::draw::marks::arrow;
 use crate::draw::{PlaneView, handle};
@@ -13,67 +13,51 @@ use crate::draw::{PlaneView, handle};
 const ARROW_SCALE: f32 = 110.0;
 
 impl Arena {
-    pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) {
-        let Some(setup) = &self.setup else { return };
+    /// The world and the robot at the instant shown; returns where it is
+    /// on screen.
+    pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) -> egui::Rect {
+        let Some(setup) = self.setup.clone() else {
+            return egui::Rect::NOTHING;
+        };
         let b = setup.world.bounds;
         let height = (width * (b.height() / b.width()) as f32).clamp(200.0, 520.0);
         let (rect, _) = ui.allocate_exact_size(vec2(width, height), Sense::hover());
         let view = PlaneView::fit(rect.shrink(4.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
         let painter = ui.painter_at(rect);
         let ink = ui.visuals().text_color();
-        let t = self.shown_time();
+        let Some(player) = &mut self.player else {
+            return rect;
+        };
+        let t = player.time();
         draw_world(ui, &painter, &view, &setup.world, t);
-        let shown = &self.records[..self.cursor];
         let start = setup.world.start;
-        let trail =
-            std::iter::once([start.x, start.y]).chain(shown.iter().map(|r| [r.pose.x, r.pose.y]));
+        let trail = std::iter::once([start.x, start.y])
+            .chain(player.ticks_shown().iter().map(|r| [r.pose.x, r.pose.y]));
         draw_trail(&painter, &view, trail, ink.gamma_multiply(0.5));
+        let run = player.state();
+        let pose = run.runner.sim.pose;
         let radius = setup.body.radius();
-        if let Some(pose) = self.shown_pose() {
-            if let Some(r) = shown.last() {
-                let at = view.to_screen([pose.x, pose.y]);
-                for ray in &r.rays {
-                    let a = pose.theta + ray.angle;
-                    let end = [pose.x + ray.range * a.cos(), pose.y + ray.range * a.sin()];
-                    let c = if ray.hit {
-                        ink.gamma_multiply(0.45)
-                    } else {
-                        ink.gamma_multiply(0.15)
-                    };
-                    painter.line_segment([at, view.to_screen(end)], Stroke::new(1.0, c));
-                }
-            }
-            let body = in_control_color(shown.last().and_then(|r| r.in_control));
-            draw_robot(&painter, &view, &pose, radius, body, ink);
-            if let Some(r) = shown.last() {
-                let at = view.to_screen([pose.x, pose.y]);
-                let world_dir = |v: Vec2| {
-                    let (s, c) = pose.theta.sin_cos();
-                    vec2((c * v.x - s * v.y) as f32, -(s * v.x + c * v.y) as f32)
+        if let Some(r) = &run.last {
+            let at = view.to_screen([pose.x, pose.y]);
+            for ray in &r.rays {
+                let a = pose.theta + ray.angle;
+                let end = [pose.x + ray.range * a.cos(), pose.y + ray.range * a.sin()];
+                let c = if ray.hit {
+                    ink.gamma_multiply(0.45)
+                } else {
+                    ink.gamma_multiply(0.15)
                 };
-                for (i, v) in r.vectors.iter().enumerate() {
-                    if let Some(v) = v {
-                        arrow(
-                            &painter,
-                            at,
-                            world_dir(*v) * ARROW_SCALE,
-                            8.0,
-                            Stroke::new(2.0, color(i)),
-                        );
-                    }
-                }
-                let cmd = Vec2::new(r.command.vx, r.command.vy);
-                arrow(
-                    &painter,
-                    at,
-                    world_dir(cmd) * ARROW_SCALE,
-                    11.0,
-                    Stroke::new(4.0, ink),
-                );
+                painter.line_segment([at, view.to_screen(end)], Stroke::new(1.0, c));
             }
+        }
+        let body = in_control_color(run.last.as_ref().and_then(|r| r.in_control));
+        draw_robot(&painter, &view, &pose, radius, body, ink);
+        if let Some(r) = &run.last {
+            arrows(&painter, &view, &pose, r, ink);
         }
         self.drag(ui, &view);
         self.legend(ui, rect);
+        rect
     }
 
     /// Obstacles and the goal as handles; a drag restarts the run.
@@ -111,21 +95,21 @@ impl Arena {
         }
         let Some((which, at)) = edit else { return };
         let at = setup.world.bounds.clamp(at[0], at[1]);
+        let mut settings = self.settings.clone();
         match which {
             Some(i) => {
-                self.design.moved.retain(|(k, _)| *k as usize != i);
-                self.design.moved.push((i as u32, at));
+                settings.moved.retain(|m| m[0] as usize != i);
+                settings.moved.push([i as f64, at[0], at[1]]);
             }
-            None => self.design.goal = Some(at),
+            None => settings.goal = Some(at),
         }
-        let playing = self.playing;
-        self.rebuild();
-        if self.problem.is_some() {
-            // The robot no longer fits at its start: undo the move.
-            self.design = self.initial.clone();
-            self.rebuild();
+        // The run starts again; when the robot no longer fits at its
+        // start, the move is undone.
+        let playing = self.player.as_ref().is_some_and(|p| p.playing);
+        self.change(settings);
+        if let Some(player) = &mut self.player {
+            player.playing = playing;
         }
-        self.playing = playing;
     }
 
     fn legend(&self, ui: &egui::Ui, rect: egui::Rect) {
@@ -167,6 +151,40 @@ impl Arena {
             ui.visuals().text_color(),
         );
     }
+}
+
+/// Each behaviour's arrow and the command's, from the robot.
+fn arrows(
+    painter: &egui::Painter,
+    view: &PlaneView,
+    pose: &kinolab_world::Pose,
+    r: &Shown,
+    ink: egui::Color32,
+) {
+    let at = view.to_screen([pose.x, pose.y]);
+    let world_dir = |v: Vec2| {
+        let (s, c) = pose.theta.sin_cos();
+        vec2((c * v.x - s * v.y) as f32, -(s * v.x + c * v.y) as f32)
+    };
+    for (i, v) in r.vectors.iter().enumerate() {
+        if let Some(v) = v {
+            arrow(
+                painter,
+                at,
+                world_dir(*v) * ARROW_SCALE,
+                8.0,
+                Stroke::new(2.0, color(i)),
+            );
+        }
+    }
+    let cmd = Vec2::new(r.command.vx, r.command.vy);
+    arrow(
+        painter,
+        at,
+        world_dir(cmd) * ARROW_SCALE,
+        11.0,
+        Stroke::new(4.0, ink),
+    );
 }
 
 /// The robot takes the colour of the behaviour in control.

@@ -8,7 +8,7 @@ use kinolab_behaviours::coordinate::subsumption::{NodeKind, Subsumption};
 use kinolab_behaviours::coordinate::{Coordinator, Trace};
 use kinolab_common::display::fixed;
 
-use super::{Arena, Record, sets};
+use super::{Arena, Shown, sets};
 use crate::behaviour::world_view::color;
 use crate::theme;
 
@@ -20,21 +20,24 @@ impl Arena {
             ui.horizontal_wrapped(|ui| {
                 for c in sets::COORDINATORS {
                     if ui
-                        .selectable_label(self.design.coordinator == c, c)
+                        .selectable_label(self.settings.coordinator == c, c.name())
                         .clicked()
-                        && self.design.coordinator != c
+                        && self.settings.coordinator != c
                     {
-                        self.design.coordinator = c.to_owned();
-                        self.rebuild();
-                        self.playing = true;
+                        let mut settings = self.settings.clone();
+                        settings.coordinator = c;
+                        self.change(settings);
                     }
                 }
             });
         }
-        let Some(setup) = &self.setup else { return };
-        let record = self.cursor.checked_sub(1).and_then(|k| self.records.get(k));
         let names = self.names();
-        match &setup.coordinator {
+        let Some(coordinator) = self.setup.as_ref().map(|s| s.coordinator.clone()) else {
+            return;
+        };
+        let record = self.shown().and_then(|r| r.last.clone());
+        let record = record.as_ref();
+        match &coordinator {
             Coordinator::Sum { gains } => {
                 ui.label(
                     "Vector summation: every active behaviour's arrow, times its gain, added.",
@@ -67,7 +70,7 @@ impl Arena {
 /// Layers stacked (the highest on top), each with its wire running right;
 /// level 0's wire reaches the motors. Nodes sit on the wires they act on
 /// and light up while they act.
-fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Option<&Record>) {
+fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Option<&Shown>) {
     let acting = match record.map(|r| &r.trace) {
         Some(Trace::Subsumption { acting }) => acting.clone(),
         _ => vec![false; s.nodes.len()],
@@ -151,7 +154,7 @@ fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Opt
 }
 
 /// A bar per candidate arc, hard right to hard left; the winner in accent.
-fn votes(ui: &mut egui::Ui, record: Option<&Record>) {
+fn votes(ui: &mut egui::Ui, record: Option<&Shown>) {
     ui.label("Voting: each behaviour votes on every arc; the highest total wins.");
     let (rect, _) = ui.allocate_exact_size(vec2(260.0, 120.0), Sense::hover());
     let painter = ui.painter_at(rect);
@@ -195,7 +198,7 @@ fn votes(ui: &mut egui::Ui, record: Option<&Record>) {
 }
 
 /// The states in a row, the current one lit, and the transitions.
-fn states(ui: &mut egui::Ui, s: &Sequencer, record: Option<&Record>) {
+fn states(ui: &mut egui::Ui, s: &Sequencer, record: Option<&Shown>) {
     let current = match record.map(|r| &r.trace) {
         Some(Trace::Sequencer { state }) => state.clone(),
         _ => s.start.clone(),

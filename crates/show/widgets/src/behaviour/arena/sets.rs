@@ -7,9 +7,45 @@ use kinolab_behaviours::coordinate::sequencer::{Sequencer, State, Transition, Tr
 use kinolab_behaviours::coordinate::subsumption::{Node, NodeKind, Subsumption};
 use kinolab_behaviours::coordinate::{Coordinator, Voting};
 use kinolab_behaviours::library::{Behaviour, Named, Side};
+use serde::{Deserialize, Serialize};
+
+/// The behaviour sets the arena offers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub(super) enum Set {
+    GoalAndAvoid,
+    Explore,
+    Light,
+}
+
+/// The coordinators, as the schema names them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub(super) enum CoordinatorKind {
+    Sum,
+    Subsumption,
+    Voting,
+    Sequencer,
+}
+
+impl CoordinatorKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            CoordinatorKind::Sum => "sum",
+            CoordinatorKind::Subsumption => "subsumption",
+            CoordinatorKind::Voting => "voting",
+            CoordinatorKind::Sequencer => "sequencer",
+        }
+    }
+}
 
 /// The coordinators, in the order of the arena's switch.
-pub(super) const COORDINATORS: [&str; 4] = ["sum", "subsumption", "voting", "sequencer"];
+pub(super) const COORDINATORS: [CoordinatorKind; 4] = [
+    CoordinatorKind::Sum,
+    CoordinatorKind::Subsumption,
+    CoordinatorKind::Voting,
+    CoordinatorKind::Sequencer,
+];
 
 fn gains(pairs: &[(&str, f64)]) -> BTreeMap<String, f64> {
     pairs.iter().map(|(k, v)| (k.to_string(), *v)).collect()
@@ -40,7 +76,7 @@ fn go(from: &str, to: &str, when: Trigger) -> Transition {
 }
 
 /// The behaviours of set `set`.
-pub(super) fn behaviours(set: &str) -> Vec<Named> {
+pub(super) fn behaviours(set: Set) -> Vec<Named> {
     let avoid = Named::new(
         "avoid",
         Behaviour::Avoid {
@@ -58,7 +94,7 @@ pub(super) fn behaviours(set: &str) -> Vec<Named> {
         },
     );
     match set {
-        "explore" => vec![
+        Set::Explore => vec![
             wander,
             Named::new(
                 "hug",
@@ -70,7 +106,7 @@ pub(super) fn behaviours(set: &str) -> Vec<Named> {
             ),
             avoid,
         ],
-        "light" => vec![
+        Set::Light => vec![
             wander,
             Named::new(
                 "seek",
@@ -81,7 +117,7 @@ pub(super) fn behaviours(set: &str) -> Vec<Named> {
             ),
             avoid,
         ],
-        _ => vec![
+        Set::GoalAndAvoid => vec![
             wander,
             Named::new(
                 "go",
@@ -96,39 +132,39 @@ pub(super) fn behaviours(set: &str) -> Vec<Named> {
 }
 
 /// The second behaviour of each set: the one with a purpose.
-fn purpose(set: &str) -> &'static str {
+fn purpose(set: Set) -> &'static str {
     match set {
-        "explore" => "hug",
-        "light" => "seek",
-        _ => "go",
+        Set::Explore => "hug",
+        Set::Light => "seek",
+        Set::GoalAndAvoid => "go",
     }
 }
 
 /// Coordinator `kind` for set `set`.
-pub(super) fn coordinator(set: &str, kind: &str) -> Coordinator {
+pub(super) fn coordinator(set: Set, kind: CoordinatorKind) -> Coordinator {
     let aim = purpose(set);
     match kind {
-        "subsumption" => Coordinator::Subsumption(Subsumption {
+        CoordinatorKind::Subsumption => Coordinator::Subsumption(Subsumption {
             layers: vec!["wander".into(), aim.into(), "avoid".into()],
             nodes: vec![
                 node(NodeKind::Suppress, aim, "wander"),
                 node(NodeKind::Suppress, "avoid", aim),
             ],
         }),
-        "voting" => Coordinator::Voting(Voting {
+        CoordinatorKind::Voting => Coordinator::Voting(Voting {
             weights: gains(&[("wander", 0.3), (aim, 1.0), ("avoid", 2.0)]),
             ..Voting::default()
         }),
-        "sequencer" => Coordinator::Sequencer(sequencer(set)),
-        _ => Coordinator::Sum {
+        CoordinatorKind::Sequencer => Coordinator::Sequencer(sequencer(set)),
+        CoordinatorKind::Sum => Coordinator::Sum {
             gains: gains(&[("wander", 0.3), (aim, 1.0), ("avoid", 1.5)]),
         },
     }
 }
 
-fn sequencer(set: &str) -> Sequencer {
+fn sequencer(set: Set) -> Sequencer {
     match set {
-        "explore" => Sequencer {
+        Set::Explore => Sequencer {
             start: "roam".into(),
             states: vec![
                 state("roam", &["wander", "avoid"]),
@@ -139,7 +175,7 @@ fn sequencer(set: &str) -> Sequencer {
                 go("follow", "roam", Trigger::After { seconds: 8.0 }),
             ],
         },
-        "light" => Sequencer {
+        Set::Light => Sequencer {
             start: "search".into(),
             states: vec![
                 state("search", &["wander", "avoid"]),
@@ -150,7 +186,7 @@ fn sequencer(set: &str) -> Sequencer {
                 go("approach", "search", Trigger::LightBelow { level: 0.3 }),
             ],
         },
-        _ => Sequencer {
+        Set::GoalAndAvoid => Sequencer {
             start: "travel".into(),
             states: vec![
                 state("travel", &["go", "avoid"]),

@@ -5,15 +5,17 @@
 use egui::{RichText, Slider};
 use kinolab_behaviours::coordinate::Coordinator;
 use kinolab_behaviours::coordinate::subsumption::{Node, NodeKind, Subsumption};
-use kinolab_behaviours::exercise::LayerTask;
+use kinolab_behaviours::exercise::{
+    LayerTask, layers_from_text, layers_text, node_from_text, node_text,
+};
 use kinolab_common::Feedback;
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 
-use super::Arena;
-use crate::widget::feedback_ui;
+use super::{Arena, NAME, Settings};
+use crate::widget::{feedback_ui, range};
 
 /// The learner's node.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 pub(super) struct NodeChoice {
     suppress: bool,
     by: String,
@@ -21,22 +23,61 @@ pub(super) struct NodeChoice {
     hold: f64,
 }
 
-/// The learner's layers (level 0 first), node, and which world is shown.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+/// The learner's layers (level 0 first), node, and which world is shown
+/// (0 to 2).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 pub(super) struct LayerDesign {
     order: Vec<String>,
     node: Option<NodeChoice>,
     world: usize,
 }
 
+/// The layer design of the first links' format.
+pub(super) type LegacyLayers = LayerDesign;
+
+/// Where the exercise starts: the layers in an unhelpful order.
+const START: [&str; 3] = ["avoid", "wander", "go"];
+
 impl LayerDesign {
-    /// Where the exercise starts: the layers in an unhelpful order, no node.
-    pub fn start() -> Self {
-        Self {
-            order: vec!["avoid".into(), "wander".into(), "go".into()],
-            node: None,
-            world: 0,
+    /// The design `settings` hold (the exercise's start where they are
+    /// silent).
+    pub fn read(settings: &Settings) -> Result<Self, String> {
+        let order = match &settings.layers {
+            Some(text) => layers_from_text(text)?,
+            None => START.iter().map(|l| (*l).to_owned()).collect(),
+        };
+        let node = match &settings.node {
+            Some(text) => {
+                let n = node_from_text(text, settings.hold)?;
+                Some(NodeChoice {
+                    suppress: n.node == NodeKind::Suppress,
+                    by: n.by,
+                    on: n.on,
+                    hold: n.hold,
+                })
+            }
+            None => None,
+        };
+        Ok(Self {
+            order,
+            node,
+            world: settings.task_world.saturating_sub(1),
+        })
+    }
+
+    /// Put this design into `settings`.
+    pub fn write(&self, settings: &mut Settings) {
+        settings.layers = Some(layers_text(&self.order));
+        settings.node = self.node().as_ref().map(node_text);
+        if let Some(n) = &self.node {
+            settings.hold = n.hold;
         }
+        settings.task_world = self.world + 1;
+    }
+
+    /// The old format's design as it was written.
+    pub fn design(self) -> Self {
+        self
     }
 
     pub fn world_seed(&self) -> u64 {
@@ -77,8 +118,12 @@ impl TaskUi {
 
 impl Arena {
     pub(super) fn task_ui(&mut self, ui: &mut egui::Ui) {
-        let (Some(task), Some(mut design)) = (self.task.as_mut(), self.design.layers.clone())
-        else {
+        let Ok(Some(mut design)) = self.settings.layer_design() else {
+            return;
+        };
+        let before = design.clone();
+        let hold = self.settings.hold;
+        let Some(task) = self.task.as_mut() else {
             return;
         };
         egui::Frame::group(ui.style()).show(ui, |ui| {
@@ -102,7 +147,7 @@ impl Arena {
             let mut placed = design.node.is_some();
             ui.checkbox(&mut placed, "place a node");
             if placed && design.node.is_none() {
-                design.node = Some(NodeChoice { suppress: true, by: design.order[n - 1].clone(), on: design.order[0].clone(), hold: 0.5 });
+                design.node = Some(NodeChoice { suppress: true, by: design.order[n - 1].clone(), on: design.order[0].clone(), hold });
             } else if !placed {
                 design.node = None;
             }
@@ -120,13 +165,14 @@ impl Arena {
             }
             feedback_ui(ui, task.feedback.as_ref());
         });
-        if self.design.layers.as_ref() != Some(&design) {
+        if design != before {
             if let Some(t) = &mut self.task {
                 t.feedback = None;
             }
-            self.design.layers = Some(design);
+            // A design that cannot run says why (the exercise stays).
+            design.write(&mut self.settings);
             self.rebuild();
-            self.playing = true;
+            self.play();
         }
     }
 }
@@ -148,5 +194,5 @@ fn node_ui(ui: &mut egui::Ui, node: &mut NodeChoice, layers: &[String]) {
             ui.radio_value(&mut node.on, l.clone(), format!("of {l}"));
         }
     });
-    ui.add(Slider::new(&mut node.hold, 0.0..=2.0).text("hold (s)"));
+    ui.add(Slider::new(&mut node.hold, range(NAME, "hold")).text("hold (s)"));
 }

@@ -1,50 +1,33 @@
-//! Play, pause, step and restart; the timeline of who had control, which
-//! doubles as the scrub bar.
+//! The player's buttons with what the run has done so far, its timeline
+//! coloured by who had control with the bumps marked, what the run shows
+//! as `kinolab run` prints it, and the exports.
 
-use egui::{Pos2, RichText, Sense, Stroke, pos2, vec2};
+use egui::{RichText, Stroke, pos2};
+use kinolab_behaviours::run::{Sample, Setup};
 use kinolab_common::display::fixed;
+use kinolab_common::trajectory::Sample as Motion;
 
-use super::Arena;
 use super::canvas::in_control_color;
+use super::{Arena, DURATION, Run};
+use crate::export::{self, Export};
+use crate::player::Player;
 
 impl Arena {
     pub(super) fn controls(&mut self, ui: &mut egui::Ui) {
+        let Some(player) = &mut self.player else {
+            return;
+        };
+        player.controls(ui);
+        let shown = player.ticks_shown();
+        let bumps = shown.iter().filter(|r| r.bump()).count();
+        let goal = shown
+            .iter()
+            .position(|r| r.goal())
+            .map(|k| player.time_at(k + 1));
         ui.horizontal_wrapped(|ui| {
-            let label = if self.playing { "Pause" } else { "Play" };
-            if ui.button(label).clicked() {
-                if self.playing {
-                    self.playing = false;
-                } else {
-                    self.resume_from_cursor();
-                    if self.runner.as_ref().is_some_and(|r| r.done()) {
-                        self.rebuild();
-                    }
-                    self.playing = true;
-                }
-            }
-            if ui.button("Step").clicked() {
-                self.playing = false;
-                if self.cursor < self.records.len() {
-                    self.cursor += 1;
-                } else {
-                    self.step();
-                }
-            }
-            if ui.button("Restart").clicked() {
-                self.rebuild();
-                self.playing = true;
-            }
-            for (speed, text) in [(1, "1×"), (4, "4×")] {
-                if ui.selectable_label(self.speed == speed, text).clicked() {
-                    self.speed = speed;
-                }
-            }
-            ui.label(format!("t = {} s", fixed(self.shown_time(), 1)));
-            let shown = &self.records[..self.cursor];
-            let bumps = shown.iter().filter(|r| r.bump).count();
-            if let Some(r) = shown.iter().find(|r| r.goal) {
+            if let Some(t) = goal {
                 ui.label(
-                    RichText::new(format!("goal reached at {} s", fixed(r.t, 1)))
+                    RichText::new(format!("goal reached at {} s", fixed(t, 1)))
                         .color(crate::theme::good_color(ui)),
                 );
             }
@@ -57,55 +40,98 @@ impl Arena {
         });
     }
 
-    /// A band coloured by the behaviour in control at each step; click or
-    /// drag on it to scrub.
+    /// The player's scrub bar, coloured by the behaviour in control at
+    /// each step (faint past the instant shown), bumps as red ticks.
     pub(super) fn timeline(&mut self, ui: &mut egui::Ui) {
-        let steps = (super::DURATION / self.setup.as_ref().map_or(0.05, |s| s.dt))
-            .round()
-            .max(1.0) as usize;
-        let width = ui.available_width();
-        let (rect, response) = ui.allocate_exact_size(vec2(width, 20.0), Sense::click_and_drag());
-        let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 3.0, ui.visuals().extreme_bg_color);
-        let x = |k: usize| rect.left() + width * k as f32 / steps as f32;
-        for (k, r) in self.records.iter().enumerate() {
-            let c = in_control_color(r.in_control);
-            let cell = egui::Rect::from_min_max(
-                pos2(x(k), rect.top()),
-                pos2(x(k + 1) + 0.5, rect.bottom()),
-            );
-            painter.rect_filled(
-                cell,
-                0.0,
-                c.gamma_multiply(if k < self.cursor { 0.9 } else { 0.35 }),
-            );
-            if r.bump {
-                painter.line_segment(
-                    [pos2(x(k), rect.top()), pos2(x(k), rect.bottom())],
-                    Stroke::new(2.0, crate::theme::error_color(ui)),
-                );
-            }
-        }
-        let cx = x(self.cursor);
-        painter.line_segment(
-            [
-                Pos2::new(cx, rect.top() - 2.0),
-                Pos2::new(cx, rect.bottom() + 2.0),
-            ],
-            Stroke::new(2.0, ui.visuals().text_color()),
+        let dt = self.setup.as_ref().map_or(0.05, |s| s.dt);
+        let steps = (DURATION / dt).round().max(1.0) as usize;
+        let red = crate::theme::error_color(ui);
+        let Some(player) = &mut self.player else {
+            return;
+        };
+        let cursor = player.cursor();
+        player.timeline(
+            ui,
+            "Timeline: who had control",
+            steps,
+            &mut |painter, rect, x, ticks| {
+                for (k, r) in ticks.iter().enumerate() {
+                    let cell = egui::Rect::from_min_max(
+                        pos2(x(k), rect.top()),
+                        pos2(x(k + 1) + 0.5, rect.bottom()),
+                    );
+                    let faint = if k < cursor { 0.9 } else { 0.35 };
+                    painter.rect_filled(
+                        cell,
+                        0.0,
+                        in_control_color(r.in_control).gamma_multiply(faint),
+                    );
+                    if r.bump() {
+                        painter.line_segment(
+                            [pos2(x(k), rect.top()), pos2(x(k), rect.bottom())],
+                            Stroke::new(2.0, red),
+                        );
+                    }
+                }
+            },
         );
-        if let Some(p) = response.interact_pointer_pos()
-            && (response.clicked() || response.dragged())
-        {
-            let k = (((p.x - rect.left()) / width) * steps as f32)
-                .round()
-                .max(0.0) as usize;
-            self.cursor = k.min(self.records.len());
-            self.playing = false;
-        }
-        response.widget_info(|| {
-            egui::WidgetInfo::labeled(egui::Role::Slider, true, "Timeline: who had control")
-        });
-        ui.label(RichText::new("Timeline: the colour of the behaviour in control at each moment; red ticks are bumps. Click or drag on it to go back.").small());
+        player.run(ui, 8);
+        ui.label(RichText::new("Timeline: the colour of the behaviour in control at each moment; red ticks are bumps. Click or drag on it to go back and forth.").small());
     }
+
+    pub(super) fn exports(&mut self, ui: &mut egui::Ui, view: egui::Rect) {
+        let file = || {
+            self.setup
+                .as_ref()
+                .map(Setup::to_json)
+                .ok_or_else(|| "this set-up cannot run".to_owned())
+        };
+        export::bar(
+            ui,
+            ui.scope_id().with("arena-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-behaviour-arena.png",
+                    rect: view,
+                },
+                Export::Run {
+                    file: "arena.run.json",
+                    command: "kinolab run arena.run.json",
+                    make: &file,
+                },
+            ],
+        );
+    }
+}
+
+/// What the run has done up to the instant shown, as `kinolab run` prints
+/// it: the samples (every step, from the start) and the events.
+pub(super) fn shows(
+    setup: &Setup,
+    player: &Player<Run>,
+) -> Option<Vec<(String, serde_json::Value)>> {
+    let start = setup.world.start;
+    let name = |i: usize| setup.behaviours.get(i).map(|b| b.name.clone());
+    let mut samples = vec![Sample {
+        motion: Motion::new(0.0, [start.x, start.y, start.theta], 0.0, 0.0),
+        control: None,
+    }];
+    let mut events = Vec::new();
+    for (k, r) in player.ticks_shown().iter().enumerate() {
+        samples.push(Sample {
+            motion: Motion::new(
+                player.time_at(k + 1),
+                [r.pose.x, r.pose.y, r.pose.theta],
+                r.v,
+                r.omega,
+            ),
+            control: r.in_control.and_then(name),
+        });
+        events.extend(r.events.iter().cloned());
+    }
+    use kinolab_common::display::tidy_report;
+    Some(vec![
+        ("/samples".into(), tidy_report(&samples).ok()?),
+        ("/events".into(), tidy_report(&events).ok()?),
+    ])
 }

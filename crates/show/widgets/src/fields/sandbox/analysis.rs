@@ -1,9 +1,10 @@
 //! What the sandbox computes about its field, kept until the field or the
-//! start changes: equilibria, the two robots' runs, the remedies, and the
-//! basin map, which fills in a slice at a time so no frame stalls.
+//! start changes: equilibria, the unicycle's run, the remedies, and the
+//! basin map, which fills in a slice at a time so no frame stalls. (The
+//! point robot's descent is the player's run.)
 
 use kinolab_fields::basin::{Basin, Starts, basin};
-use kinolab_fields::descend::{Descent, Steps, Trail, Unicycle, descend, follow};
+use kinolab_fields::descend::{Descent, Steps, Trail, Unicycle, follow};
 use kinolab_fields::minima::{Equilibrium, Search, equilibria, stable};
 use kinolab_fields::remedy::{Remedy, Wavefront, escape};
 use kinolab_fields::{Field, Vec2};
@@ -48,7 +49,6 @@ pub(super) struct Analysis {
     /// Whether the equilibria came from the quick search (while dragging).
     coarse: bool,
     pub equilibria: Vec<Equilibrium>,
-    pub descent: Option<Descent>,
     pub trail: Option<Trail>,
     pub remedies: Vec<RemedyRun>,
     remedies_key: Option<(u64, [f64; 2])>,
@@ -93,8 +93,6 @@ impl Analysis {
             };
             self.equilibria = equilibria(field, area, search).unwrap_or_default();
             self.coarse = dragging;
-            let s = Vec2::new(start[0], start[1]);
-            self.descent = descend(field, s, STEPS).ok();
             if self.key.map(|k| k.0) != Some(version) {
                 self.basins = None;
             }

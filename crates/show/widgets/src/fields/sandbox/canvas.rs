@@ -54,8 +54,9 @@ impl Ink {
 }
 
 impl Sandbox {
-    /// Draw the field and take the handles; returns whether a handle is held.
-    pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) -> bool {
+    /// Draw the field and take the handles; returns whether a handle is
+    /// held, and where the picture is.
+    pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) -> (bool, Rect) {
         let area = self.area;
         let height = (width * (area.height() / area.width()) as f32).clamp(300.0, 560.0);
         let (response, painter) = canvas(ui, vec2(width, height), Sense::hover());
@@ -73,17 +74,18 @@ impl Sandbox {
             egui::StrokeKind::Inside,
         );
         if let Some(field) = &self.field {
-            if self.design.shading {
+            if self.settings.shading {
                 shade(&painter, &view, &area, field, ink.accent);
             }
             self.draw_basins(&painter, &view, &ink);
             arrows(&painter, &view, &area, field, ink.faint);
-            if self.design.streamlines {
+            if self.settings.streamlines {
                 streamlines(&painter, &view, &area, field, ink.text.gamma_multiply(0.55));
             }
         }
         self.draw_pieces(&painter, &view, &ink);
-        self.draw_runs(&painter, &view, &ink);
+        let at = self.player.as_mut().map(|p| p.state().k);
+        self.draw_runs(&painter, &view, &ink, at);
         self.draw_equilibria(&painter, &view, &ink);
         if let Some(at) = self.task.as_ref().and_then(super::exercise::Task::point) {
             let p = view.to_screen(at);
@@ -109,7 +111,7 @@ impl Sandbox {
             );
             corner_text(&painter, rect, 0, text, ink.text);
         }
-        held
+        (held, rect)
     }
 
     fn draw_pieces(&self, painter: &Painter, view: &PlaneView, ink: &Ink) {
@@ -177,27 +179,30 @@ impl Sandbox {
         }
     }
 
-    fn draw_runs(&self, painter: &Painter, view: &PlaneView, ink: &Ink) {
+    /// The remedies' paths, the point robot's (faint ahead of it, `at`
+    /// steps along), the unicycle's trail and the start.
+    fn draw_runs(&self, painter: &Painter, view: &PlaneView, ink: &Ink, at: Option<usize>) {
         let path = |points: &[[f64; 2]], color: Color32, width: f32| {
             let pts: Vec<Pos2> = points.iter().map(|p| view.to_screen(*p)).collect();
             painter.add(egui::Shape::line(pts, Stroke::new(width, color)));
         };
-        for (run, shown) in self.analysis.remedies.iter().zip(self.design.remedies) {
+        for (run, shown) in self.analysis.remedies.iter().zip(self.design.drawn) {
             if let (true, Some(d)) = (shown, &run.descent) {
                 path(&d.path, ink.good.gamma_multiply(0.9), 2.0);
             }
         }
-        if let Some(d) = &self.analysis.descent {
-            path(&d.path, ink.accent, 2.5);
-            let end = view.to_screen(d.end);
-            match d.outcome {
-                Outcome::Trapped => cross(painter, end, 6.0, Stroke::new(2.5, ink.bad)),
-                _ => {
-                    painter.circle_filled(end, 4.0, ink.accent);
-                }
+        if let (Some(d), Some(k)) = (&self.descent, at) {
+            path(&d.path, ink.accent.gamma_multiply(0.3), 1.5);
+            let k = k.min(d.path.len().saturating_sub(1));
+            path(&d.path[..=k], ink.accent, 2.5);
+            let robot = view.to_screen(d.path[k]);
+            if k + 1 == d.path.len() && d.outcome == Outcome::Trapped {
+                cross(painter, robot, 6.0, Stroke::new(2.5, ink.bad));
+            } else {
+                painter.circle_filled(robot, 5.0, ink.accent);
             }
         }
-        if self.design.unicycle
+        if self.settings.unicycle
             && let Some(t) = &self.analysis.trail
         {
             let pts: Vec<[f64; 2]> = t.poses.iter().map(|p| [p.x, p.y]).collect();
@@ -324,6 +329,7 @@ impl Sandbox {
         held |= h.held();
         if let Some(to) = h.dragged_to(view, self.design.start) {
             self.design.start = clamp(to);
+            self.restart();
         }
         held
     }

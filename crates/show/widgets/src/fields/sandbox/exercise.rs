@@ -6,8 +6,8 @@ use kinolab_fields::exercise::{check_escape, check_stand_off, check_vector};
 use kinolab_fields::{Field, Vec2};
 
 use super::piece::Kind;
-use super::{Design, Sandbox};
-use crate::widget::{Params, feedback_ui};
+use super::{Design, Sandbox, Settings, TaskName};
+use crate::widget::feedback_ui;
 
 pub(super) enum TaskKind {
     /// Work out F at `at`; `answer` is what the learner typed.
@@ -24,25 +24,22 @@ pub(super) struct Task {
 }
 
 /// The task a lesson set up, if any.
-pub(super) fn from_params(p: &Params, design: &Design) -> Result<Option<Task>, String> {
-    let kind = match p.choice("task") {
-        Some("vector-at") => match p.numbers("at") {
-            Some([x, y]) => TaskKind::VectorAt {
-                at: [*x, *y],
-                answer: [0.0, 0.0],
-            },
-            _ => return Err("`task: vector-at` needs `at: x, y`".into()),
+pub(super) fn from_settings(s: &Settings, design: &Design) -> Result<Option<Task>, String> {
+    let kind = match s.task {
+        Some(TaskName::VectorAt) => TaskKind::VectorAt {
+            at: s.at.ok_or("`task: vector-at` needs `at: x, y`")?,
+            answer: [0.0, 0.0],
         },
-        Some("escape") => TaskKind::Escape,
-        Some("stand-off") => TaskKind::StandOff {
+        Some(TaskName::Escape) => TaskKind::Escape,
+        Some(TaskName::StandOff) => TaskKind::StandOff {
             wall: design
                 .pieces
                 .iter()
                 .position(|q| q.kind == Kind::Perpendicular)
                 .ok_or("`task: stand-off` needs a preset with a wall")?,
-            clearance: p.number("clearance").unwrap_or(0.3),
+            clearance: s.clearance,
         },
-        _ => return Ok(None),
+        None => return Ok(None),
     };
     Ok(Some(Task {
         kind,

@@ -1,27 +1,77 @@
 //! The field sandbox: paint a potential field with the five primitives,
 //! see it as shading, arrows and streamlines, find where it traps a robot,
-//! follow it with a point robot and a unicycle, and try the remedies.
+//! follow it with a point robot (played step by step by the player) and a
+//! unicycle, and try the remedies. What the learner changed lives in the
+//! settings (the schema's `fields`, `goal`, `start`, `paths`); "Save run"
+//! writes the field file `kinolab field --descend` follows.
 
 mod analysis;
 mod canvas;
 mod exercise;
 mod panel;
 mod piece;
+mod run;
 
-use kinolab_fields::catalogue::{PRESETS, Preset, preset};
+use std::sync::Arc;
+
+use kinolab_fields::catalogue::{Preset, preset};
+use kinolab_fields::descend::{Descent, descend};
+use kinolab_fields::file::{self, Entry};
 use kinolab_fields::{Field, Vec2};
 use kinolab_world::Rect;
 use serde::{Deserialize, Serialize};
 
-use crate::link;
-use crate::widget::{LabWidget, Params};
-use analysis::Analysis;
+use crate::link::{self, Moment};
+use crate::player::Player;
+use crate::widget::{LabWidget, Params, SavedRun};
+use analysis::{Analysis, STEPS};
 use exercise::Task;
 use piece::Piece;
+use run::Descending;
 
-/// Everything the learner can change, and what a link carries.
+/// The widget's name in the schema.
+const NAME: &str = "field-sandbox";
+
+/// The remedies whose paths can be drawn, as the schema's `paths` names
+/// them, in the order of [`analysis::REMEDIES`] and then the wavefront.
+const PATHS: [&str; 5] = [
+    "noise",
+    "avoid-past",
+    "templates",
+    "wall-following",
+    "wavefront",
+];
+
+/// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Design {
+struct Settings {
+    preset: String,
+    streamlines: bool,
+    shading: bool,
+    unicycle: bool,
+    remedies: bool,
+    editable: bool,
+    task: Option<TaskName>,
+    at: Option<[f64; 2]>,
+    clearance: f64,
+    /// The primitives on a line, when they are not the preset's.
+    fields: Option<String>,
+    goal: Option<[f64; 2]>,
+    start: Option<[f64; 2]>,
+    paths: Option<String>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum TaskName {
+    VectorAt,
+    Escape,
+    StandOff,
+}
+
+/// The links of the first format: the design as the sandbox kept it.
+#[derive(Deserialize)]
+struct Legacy {
     preset: String,
     pieces: Vec<Piece>,
     goal: Option<[f64; 2]>,
@@ -29,15 +79,86 @@ struct Design {
     streamlines: bool,
     shading: bool,
     unicycle: bool,
-    /// Which remedies' paths are drawn (see [`REMEDIES`]) and the wavefront's.
     remedies: [bool; 5],
     editable: bool,
 }
 
+/// What the learner edits, read from the settings: the pieces, the goal,
+/// the start and which remedies' paths are drawn.
+#[derive(Debug, Clone, PartialEq)]
+struct Design {
+    pieces: Vec<Piece>,
+    goal: Option<[f64; 2]>,
+    start: [f64; 2],
+    drawn: [bool; 5],
+}
+
+/// A preset, its goal and its entries as its file has them.
+type PresetFile = (&'static Preset, Option<[f64; 2]>, Vec<Entry>);
+
+/// The preset called `id`, its goal and its entries as its file has them.
+fn preset_of(id: &str) -> Result<PresetFile, String> {
+    let p = preset(id).ok_or_else(|| format!("no field preset `{id}`"))?;
+    let (goal, entries) = file::entries(p.file).map_err(|e| e.to_string())?;
+    Ok((p, goal, entries))
+}
+
+impl Design {
+    fn read(s: &Settings) -> Result<Self, String> {
+        let (p, goal, entries) = preset_of(&s.preset)?;
+        let entries = match &s.fields {
+            Some(text) => file::from_line(text)?,
+            None => entries,
+        };
+        let pieces = entries
+            .iter()
+            .map(|e| Piece::from_entry(e).map_err(|e| e.to_string()))
+            .collect::<Result<_, _>>()?;
+        let mut drawn = [false; 5];
+        for word in s.paths.iter().flat_map(|t| t.split(',')) {
+            let k = PATHS
+                .iter()
+                .position(|p| *p == word.trim())
+                .ok_or_else(|| format!("no remedy `{word}`"))?;
+            drawn[k] = true;
+        }
+        Ok(Self {
+            pieces,
+            goal: s.goal.or(goal),
+            start: s.start.unwrap_or(p.start),
+            drawn,
+        })
+    }
+
+    /// Put this design into `s`, leaving out what is the preset's own.
+    fn write(&self, s: &mut Settings) {
+        let Ok((p, goal, entries)) = preset_of(&s.preset) else {
+            return;
+        };
+        let line = file::line(&self.entries());
+        s.fields = (line != file::line(&entries)).then_some(line);
+        s.goal = self.goal.filter(|g| Some(*g) != goal);
+        s.start = Some(self.start).filter(|at| *at != p.start);
+        let drawn: Vec<&str> = PATHS
+            .iter()
+            .zip(self.drawn)
+            .filter_map(|(name, on)| on.then_some(*name))
+            .collect();
+        s.paths = (!drawn.is_empty()).then(|| drawn.join(", "));
+    }
+
+    fn entries(&self) -> Vec<Entry> {
+        self.pieces.iter().map(Piece::entry).collect()
+    }
+}
+
 struct Sandbox {
+    settings: Settings,
+    initial: Settings,
     design: Design,
-    initial: Design,
-    /// The field the pieces make, or why they do not make one.
+    /// The field file the pieces make, and the field as it reads, or why
+    /// they do not make one.
+    file: Option<String>,
     field: Option<Field>,
     problem: Option<String>,
     /// Grows with every edit, so results know when they are stale.
@@ -46,102 +167,109 @@ struct Sandbox {
     selected: Option<usize>,
     /// How many pieces came with the preset (an exercise may lock them).
     preset_pieces: usize,
-    show_remedies: bool,
     analysis: Analysis,
     task: Option<Task>,
+    /// The point robot's descent, played step by step.
+    descent: Option<Arc<Descent>>,
+    player: Option<Player<Descending>>,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    Ok(Box::new(Sandbox::new(p)?))
+    Ok(Box::new(Sandbox::new(p.settings()?)?))
 }
 
 impl Sandbox {
-    fn new(p: &Params) -> Result<Self, String> {
-        let id = p.choice("preset").unwrap_or("goal-behind-a-rock");
-        let found = preset(id).ok_or_else(|| format!("no field preset `{id}`"))?;
-        let mut design = Design::from_preset(found)?;
-        design.streamlines = p.yes("streamlines");
-        design.shading = p.yes("shading");
-        design.unicycle = p.yes("unicycle");
-        design.editable = p.yes("editable");
-        let task = exercise::from_params(p, &design)?;
+    fn new(settings: Settings) -> Result<Self, String> {
+        let design = Design::read(&settings)?;
+        let (p, _, entries) = preset_of(&settings.preset)?;
+        let task = exercise::from_settings(&settings, &design)?;
         let mut sandbox = Sandbox {
-            initial: design.clone(),
+            initial: settings.clone(),
+            settings,
             design,
+            file: None,
             field: None,
             problem: None,
             version: 0,
-            area: Rect::from(found.area),
+            area: Rect::from(p.area),
             selected: None,
-            preset_pieces: 0,
-            show_remedies: p.yes("remedies"),
+            preset_pieces: entries.len(),
             analysis: Analysis::default(),
             task,
+            descent: None,
+            player: None,
         };
-        sandbox.load_preset_size();
         sandbox.changed();
         Ok(sandbox)
     }
-}
 
-impl Design {
-    fn from_preset(p: &Preset) -> Result<Self, String> {
-        let field = p.field().map_err(|e| e.to_string())?;
-        Ok(Self {
-            preset: p.id.to_owned(),
-            pieces: field.primitives.iter().map(Piece::from_primitive).collect(),
-            goal: field.goal.map(|g| [g.x, g.y]),
-            start: p.start,
-            streamlines: true,
-            shading: true,
-            unicycle: false,
-            remedies: [false; 5],
-            editable: true,
-        })
-    }
-}
-
-impl Sandbox {
-    /// Rebuild the field from the pieces after any edit.
+    /// Rebuild the field from the pieces after any edit, and the descent.
     fn changed(&mut self) {
         self.version += 1;
-        let primitives: Result<Vec<_>, _> = self
-            .design
-            .pieces
-            .iter()
-            .enumerate()
-            .map(|(i, p)| p.primitive().map_err(|e| format!("field {}: {e}", i + 1)))
-            .collect();
-        match primitives {
-            Ok(primitives) => {
-                let goal = self.design.goal.map(|g| Vec2::new(g[0], g[1]));
-                self.field = Some(Field::new(self.design.preset.clone(), goal, primitives));
+        self.design.write(&mut self.settings);
+        let text = file::write(
+            &self.settings.preset,
+            self.design.goal,
+            &self.design.entries(),
+        );
+        match Field::from_json(&text) {
+            Ok(field) => {
+                self.field = Some(field);
+                self.file = Some(text);
                 self.problem = None;
             }
-            Err(e) => self.problem = Some(e),
+            Err(e) => {
+                self.field = None;
+                self.file = None;
+                self.problem = Some(e.to_string());
+            }
         }
         if let Some(t) = &mut self.task {
             t.feedback = None;
         }
+        self.restart();
+    }
+
+    /// The point robot's descent from the start, at its start.
+    fn restart(&mut self) {
+        self.design.write(&mut self.settings);
+        let playing = self.player.as_ref().is_some_and(|p| p.playing);
+        let speed = self.player.as_ref().map(|p| p.speed);
+        let [x, y] = self.design.start;
+        self.descent = self
+            .field
+            .as_ref()
+            .and_then(|f| descend(f, Vec2::new(x, y), STEPS).ok())
+            .map(Arc::new);
+        self.player = self.descent.clone().map(|d| {
+            let mut player = Player::new(Descending::new(d));
+            player.playing = playing;
+            if let Some(speed) = speed {
+                player.speed = speed;
+            }
+            player
+        });
     }
 
     /// Switch to another preset, keeping the view switches.
     fn load(&mut self, p: &Preset) {
-        if let Ok(mut d) = Design::from_preset(p) {
-            d.streamlines = self.design.streamlines;
-            d.shading = self.design.shading;
-            d.unicycle = self.design.unicycle;
-            d.editable = self.design.editable;
-            self.design = d;
-            self.area = Rect::from(p.area);
-            self.selected = None;
-            self.load_preset_size();
-            self.changed();
-        }
-    }
-
-    fn load_preset_size(&mut self) {
+        let settings = Settings {
+            preset: p.id.to_owned(),
+            fields: None,
+            goal: None,
+            start: None,
+            paths: None,
+            ..self.settings.clone()
+        };
+        let Ok(design) = Design::read(&settings) else {
+            return;
+        };
+        self.settings = settings;
+        self.design = design;
+        self.area = Rect::from(p.area);
+        self.selected = None;
         self.preset_pieces = self.design.pieces.len();
+        self.changed();
     }
 
     /// Whether piece `i` was added by the learner (after the preset's own).
@@ -157,34 +285,38 @@ impl Sandbox {
 
 impl LabWidget for Sandbox {
     fn ui(&mut self, ui: &mut egui::Ui) {
+        if let Some(player) = &mut self.player {
+            player.controls(ui);
+        }
         let wide = ui.available_width() >= 760.0;
         let canvas_width = if wide {
             ui.available_width() * 0.62
         } else {
             ui.available_width()
         };
-        let held = if wide {
+        let (held, view) = if wide {
             ui.horizontal_top(|ui| {
-                let held = self.canvas(ui, canvas_width);
+                let drawn = self.canvas(ui, canvas_width);
                 ui.vertical(|ui| self.panel(ui));
-                held
+                drawn
             })
             .inner
         } else {
-            let held = self.canvas(ui, canvas_width);
+            let drawn = self.canvas(ui, canvas_width);
             self.panel(ui);
-            held
+            drawn
         };
+        self.timeline(ui);
+        self.exports(ui, view);
         if let Some(field) = &self.field {
-            let remedies = self.show_remedies;
             self.analysis.update(
                 field,
                 self.version,
                 self.design.start,
                 &self.area,
                 held,
-                self.design.unicycle,
-                remedies,
+                self.settings.unicycle,
+                self.settings.remedies,
             );
         }
         let mapping = self.analysis.basins.as_ref().is_some_and(|m| !m.done());
@@ -194,74 +326,84 @@ impl LabWidget for Sandbox {
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.design, &self.initial)
+        let moment = self.player.as_ref().map(Player::moment).unwrap_or_default();
+        link::write(NAME, &self.settings, &self.initial, &moment)
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        let Some(design) = link::decode::<Design>(state) else {
-            return Err("it is not a state of the field sandbox".into());
+        let (settings, moment) = match link::read::<Settings, ()>(NAME, state) {
+            Ok(read) => read,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => (old.settings(&self.initial)?, Moment::default()),
+                None => return Err(why),
+            },
         };
-        if let Some(p) = PRESETS.iter().find(|p| p.id == design.preset) {
-            self.area = Rect::from(p.area);
-            self.preset_pieces = p.field().map(|f| f.primitives.len()).unwrap_or(0);
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        let mut again = Sandbox::new(settings)?;
+        again.initial = self.initial.clone();
+        if let Some(player) = &mut again.player {
+            player.replay(&moment.events, moment.instant);
         }
-        self.design = design;
-        self.changed();
+        *self = again;
         Ok(())
+    }
+
+    fn seek(&mut self, t: f64) {
+        if let Some(player) = &mut self.player {
+            player.seek_time(t);
+        }
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        use kinolab_common::display::tidy_report;
+        let text = self.file.clone()?;
+        let d = self.descent.clone()?;
+        // A tick is a step: the robot is at the cursor's point.
+        let k = self.player.as_ref()?.cursor();
+        let mut shows = vec![(
+            "/path".to_owned(),
+            tidy_report(&d.path.get(..=k)?.to_vec()).ok()?,
+        )];
+        if k + 1 == d.path.len() {
+            shows.push(("/outcome".into(), tidy_report(&d.outcome).ok()?));
+            shows.push(("/end".into(), tidy_report(&d.end).ok()?));
+        }
+        Some(SavedRun {
+            file: run::FILE.into(),
+            text,
+            args: run::args(self.design.start),
+            shows,
+        })
+    }
+}
+
+impl Legacy {
+    /// The old design as settings (not yet checked against the schema).
+    fn settings(self, initial: &Settings) -> Result<Settings, String> {
+        let mut s = Settings {
+            preset: self.preset,
+            streamlines: self.streamlines,
+            shading: self.shading,
+            unicycle: self.unicycle,
+            editable: self.editable,
+            fields: None,
+            goal: None,
+            start: None,
+            paths: None,
+            ..initial.clone()
+        };
+        preset_of(&s.preset)?;
+        let design = Design {
+            pieces: self.pieces,
+            goal: self.goal,
+            start: self.start,
+            drawn: self.remedies,
+        };
+        design.write(&mut s);
+        Ok(s)
     }
 }
 
 #[cfg(test)]
-mod tests {
-    use super::analysis::REMEDIES;
-    use super::*;
-    use crate::registry::spec;
-
-    fn sandbox(params: &[(&str, &str)]) -> Sandbox {
-        let p = kinolab_schema::validate(&spec("field-sandbox", params)).unwrap();
-        let mut s = Sandbox::new(&p).unwrap();
-        s.show_remedies = true;
-        s
-    }
-
-    #[test]
-    fn the_analysis_finds_the_u_trap_and_the_remedies_run() {
-        let mut s = sandbox(&[("preset", "u-shaped-wall")]);
-        let field = s.field.clone().unwrap();
-        s.analysis.update(
-            &field,
-            s.version,
-            s.design.start,
-            &s.area,
-            false,
-            true,
-            true,
-        );
-        let traps: Vec<_> = s
-            .analysis
-            .minima(&field)
-            .into_iter()
-            .filter(|m| !m.goal)
-            .collect();
-        assert_eq!(traps.len(), 1);
-        assert!((traps[0].x - 3.75).abs() < 1e-6);
-        assert_eq!(s.analysis.remedies.len(), REMEDIES.len() + 1);
-        assert!(s.analysis.trail.is_some());
-    }
-
-    #[test]
-    fn a_link_restores_the_design() {
-        let mut s = sandbox(&[("preset", "rock-on-the-axis")]);
-        s.design
-            .pieces
-            .push(Piece::new(piece::Kind::Tangential, [2.0, 0.0]));
-        s.changed();
-        let link = s.state().unwrap();
-        let mut t = sandbox(&[("preset", "rock-on-the-axis")]);
-        let _ = t.restore(&link);
-        assert_eq!(t.design, s.design);
-        assert_eq!(t.preset_pieces, 2);
-        let _ = t.restore("zzz");
-        assert_eq!(t.design, s.design, "a damaged link changes nothing");
-    }
-}
+mod tests;

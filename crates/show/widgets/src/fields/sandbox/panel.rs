@@ -23,12 +23,12 @@ impl Sandbox {
         self.pieces_ui(ui);
         ui.separator();
         ui.horizontal_wrapped(|ui| {
-            ui.checkbox(&mut self.design.streamlines, "streamlines");
-            ui.checkbox(&mut self.design.shading, "shading");
-            ui.checkbox(&mut self.design.unicycle, "unicycle");
+            ui.checkbox(&mut self.settings.streamlines, "streamlines");
+            ui.checkbox(&mut self.settings.shading, "shading");
+            ui.checkbox(&mut self.settings.unicycle, "unicycle");
         });
         self.findings_ui(ui);
-        if self.show_remedies {
+        if self.settings.remedies {
             self.remedies_ui(ui);
         }
         self.basins_ui(ui);
@@ -39,7 +39,7 @@ impl Sandbox {
         if self.task.is_some() {
             return;
         }
-        let current = PRESETS.iter().find(|p| p.id == self.design.preset);
+        let current = PRESETS.iter().find(|p| p.id == self.settings.preset);
         let mut chosen = None;
         // Labelled, so a screen reader names it too.
         egui::ComboBox::new(ui.scope_id().with("preset"), "field")
@@ -67,7 +67,7 @@ impl Sandbox {
     pub(super) fn edit_mode(&self, i: usize) -> Option<bool> {
         match &self.task {
             Some(t) => t.edit(i, self.is_added(i)),
-            None => self.design.editable.then_some(false),
+            None => self.settings.editable.then_some(false),
         }
     }
 
@@ -106,7 +106,7 @@ impl Sandbox {
         let added = self.design.pieces.len().saturating_sub(self.preset_pieces);
         let may_add = match &self.task {
             Some(t) => t.may_add(added),
-            None => self.design.editable,
+            None => self.settings.editable,
         };
         if may_add && self.design.pieces.len() < 16 {
             ui.horizontal_wrapped(|ui| {
@@ -144,10 +144,10 @@ impl Sandbox {
                 RichText::new(format!("  trap at ({}, {})", fixed(e.x, 3), fixed(e.y, 3))).small(),
             );
         }
-        if let Some(d) = &self.analysis.descent {
+        if let Some(d) = &self.descent {
             ui.label(format!("Point robot: {}", outcome_text(d)));
         }
-        if self.design.unicycle
+        if self.settings.unicycle
             && let Some(t) = &self.analysis.trail
         {
             let text = match t.outcome {
@@ -179,7 +179,12 @@ impl Sandbox {
                 .get(k)
                 .and_then(|r| r.descent.as_ref());
             let text = run.map_or_else(|| "…".to_owned(), outcome_text);
-            ui.checkbox(&mut self.design.remedies[k], format!("{name}: {text}"));
+            if ui
+                .checkbox(&mut self.design.drawn[k], format!("{name}: {text}"))
+                .changed()
+            {
+                self.design.write(&mut self.settings);
+            }
         }
     }
 

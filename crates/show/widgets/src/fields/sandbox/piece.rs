@@ -2,8 +2,9 @@
 //! kind, so switching kind and back loses nothing. The core checks it.
 
 use egui::{ComboBox, DragValue, Slider};
+use kinolab_fields::FieldError;
+use kinolab_fields::file::{Entry, Kind as EntryKind, ProfileName};
 use kinolab_fields::primitive::{Primitive, Profile, Sense, Source, Spin};
-use kinolab_fields::{FieldError, Vec2};
 use serde::{Deserialize, Serialize};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -111,51 +112,76 @@ impl Piece {
         }
     }
 
-    /// The core's primitive, checked.
-    pub fn primitive(&self) -> Result<Primitive, FieldError> {
-        let c = Vec2::new(self.at[0], self.at[1]);
-        let source = match self.kind {
-            Kind::Uniform => Source::Uniform {
-                direction: self.direction_deg.to_radians(),
-            },
-            Kind::Attractive => Source::Attractive { centre: c },
-            Kind::Repulsive => Source::Repulsive {
-                centre: c,
-                radius: self.radius,
-            },
-            Kind::Tangential => Source::Tangential {
-                centre: c,
-                radius: self.radius,
-                spin: if self.flipped { Spin::Cw } else { Spin::Ccw },
-            },
-            Kind::Perpendicular => Source::Perpendicular {
-                from: c,
-                to: Vec2::new(self.to[0], self.to[1]),
-                sense: if self.flipped {
+    /// Whether this piece reaches everywhere (no range).
+    fn unranged(&self) -> bool {
+        self.kind == Kind::Uniform
+            || (self.kind == Kind::Attractive
+                && self.unlimited
+                && self.profile != ProfileKind::Linear)
+    }
+
+    /// The piece as a field file's entry (every number as it is here).
+    pub fn entry(&self) -> Entry {
+        let profile = match self.profile {
+            ProfileKind::Constant => ProfileName::Constant,
+            ProfileKind::Linear => ProfileName::Linear,
+            ProfileKind::Exponential => ProfileName::Exponential,
+            ProfileKind::Potential => ProfileName::Potential,
+        };
+        let mut e = Entry {
+            gain: Some(self.gain),
+            profile: Some(profile),
+            range: (!self.unranged()).then_some(self.range),
+            lambda: (self.profile == ProfileKind::Exponential).then_some(self.lambda),
+            ..Entry::default()
+        };
+        let centre = |e: &mut Entry| {
+            e.x = Some(self.at[0]);
+            e.y = Some(self.at[1]);
+        };
+        match self.kind {
+            Kind::Uniform => {
+                e.kind = Some(EntryKind::Uniform);
+                e.direction_deg = Some(self.direction_deg);
+            }
+            Kind::Attractive => {
+                e.kind = Some(EntryKind::Attractive);
+                centre(&mut e);
+            }
+            Kind::Repulsive | Kind::Tangential => {
+                e.kind = Some(if self.kind == Kind::Repulsive {
+                    EntryKind::Repulsive
+                } else {
+                    EntryKind::Tangential
+                });
+                centre(&mut e);
+                e.radius = Some(self.radius);
+                if self.kind == Kind::Tangential {
+                    e.spin = Some(if self.flipped { Spin::Cw } else { Spin::Ccw });
+                }
+            }
+            Kind::Perpendicular => {
+                e.kind = Some(EntryKind::Perpendicular);
+                e.from = Some(self.at);
+                e.to = Some(self.to);
+                e.sense = Some(if self.flipped {
                     Sense::Toward
                 } else {
                     Sense::Away
-                },
-            },
-        };
-        let profile = match self.profile {
-            ProfileKind::Constant => Profile::Constant,
-            ProfileKind::Linear => Profile::Linear,
-            ProfileKind::Exponential => Profile::Exponential {
-                lambda: self.lambda,
-            },
-            ProfileKind::Potential => Profile::Potential,
-        };
-        let no_range = self.kind == Kind::Uniform
-            || (self.kind == Kind::Attractive
-                && self.unlimited
-                && self.profile != ProfileKind::Linear);
-        Primitive::new(
-            source,
-            self.gain,
-            profile,
-            (!no_range).then_some(self.range),
-        )
+                });
+            }
+        }
+        e
+    }
+
+    /// The piece that edits the entry `e` (checked by the core; a uniform
+    /// field keeps its direction in degrees exactly as written).
+    pub fn from_entry(e: &Entry) -> Result<Self, FieldError> {
+        let mut piece = Piece::from_primitive(&e.primitive()?);
+        if let Some(d) = e.direction_deg {
+            piece.direction_deg = d;
+        }
+        Ok(piece)
     }
 
     /// The piece that edits `p`.
@@ -315,14 +341,19 @@ mod tests {
             .unwrap();
         for p in &field.primitives {
             let piece = Piece::from_primitive(p);
-            assert_eq!(piece.primitive().unwrap(), *p);
+            assert_eq!(piece.entry().primitive().unwrap(), *p);
         }
         for k in Kind::ALL {
-            assert!(
-                Piece::new(k, [1.0, 1.0]).primitive().is_ok(),
-                "{}",
-                k.name()
-            );
+            let piece = Piece::new(k, [1.0, 1.0]);
+            // As an entry and back: a primitive, the same entry.
+            let entry = piece.entry();
+            assert!(entry.primitive().is_ok(), "{}", k.name());
+            let back = Piece::from_entry(&entry).unwrap();
+            assert_eq!(back.entry(), entry, "{}", k.name());
         }
+        let mut uniform = Piece::new(Kind::Uniform, [0.0, 0.0]);
+        uniform.direction_deg = 37.3;
+        let back = Piece::from_entry(&uniform.entry()).unwrap();
+        assert_eq!(back.direction_deg, 37.3);
     }
 }
