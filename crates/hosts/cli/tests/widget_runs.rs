@@ -44,7 +44,7 @@ fn reproduces(name: &str, dir: &std::path::Path) {
         std::fs::write(dir.join(&run.file), &run.text).unwrap();
         let out = Command::new(env!("CARGO_BIN_EXE_kinolab"))
             .args(&run.args)
-            .current_dir(&dir)
+            .current_dir(dir)
             .output()
             .unwrap();
         assert!(
@@ -64,5 +64,4 @@ fn reproduces(name: &str, dir: &std::path::Path) {
             );
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -89,6 +89,11 @@ pub fn write<T: Serialize + PartialEq, E: Serialize>(
     if !moment.events.is_empty() {
         lines += &format!("@events: {}\n", serde_json::to_string(&moment.events).ok()?);
     }
+    if lines.is_empty() {
+        // Every setting the schema's default, at the start: said in a
+        // line, since a link with nothing in it is a damaged one.
+        lines += "@t: 0\n";
+    }
     let mut text = String::from(SETTINGS);
     URL_SAFE_NO_PAD.encode_string(lines.as_bytes(), &mut text);
     (text.len() <= MAX_LEN).then_some(text)
@@ -110,6 +115,9 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
         .decode(body)
         .map_err(|_| "it is damaged (cut short or altered)".to_owned())?;
     let lines = String::from_utf8(bytes).map_err(|_| "it is damaged (not text)".to_owned())?;
+    if lines.is_empty() {
+        return Err("it is damaged (empty)".into());
+    }
     let mut params = Vec::new();
     let mut moment = Moment::default();
     for line in lines.lines() {
@@ -230,11 +238,16 @@ mod tests {
         assert!(read_legs(&text[..text.len() - 2]).is_err(), "cut short");
         assert!(read_legs("a!!!").is_err());
         assert!(read_legs(&format!("b{}", "A".repeat(MAX_LEN))).is_err());
+        assert!(read_legs(&encode("")).is_err(), "empty");
         assert_eq!(
-            read_legs(&encode("")),
+            read_legs(&encode("@t: 0\n")),
             Ok(Legs { legs: 2 }),
             "the schema's default"
         );
+        // Settings that are all the schema's defaults still make a link.
+        let moment: Moment<String> = Moment::default();
+        let text = write("leg-events", &Legs { legs: 2 }, &Legs { legs: 5 }, &moment);
+        assert_eq!(read_legs(&text.unwrap_or_default()), Ok(Legs { legs: 2 }));
     }
 
     #[test]
