@@ -7,7 +7,7 @@
 //! back along the body's x axis from xᵢ + L/2 to xᵢ − L/2 (L the stride).
 
 use kinolab_common::error::{finite, in_range, non_negative};
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
 use crate::error::FieldError;
 use crate::stability::{Point, static_stability};
@@ -17,7 +17,7 @@ pub const MAX_LEGS: usize = 64;
 
 /// One leg: its name, its foot's neutral point in the body frame, and its
 /// lift-off phase.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Leg {
     pub name: String,
@@ -27,7 +27,7 @@ pub struct Leg {
 }
 
 /// A periodic gait (the contract's gait file).
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(
     deny_unknown_fields,
     expecting = "a gait file (an object with `duty_factor`, `stride` and `legs`)"

@@ -11,14 +11,17 @@
 //! phase crosses a multiple of 2π. Steps are classic RK4.
 
 use kinolab_common::trig;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 
 use crate::cpg::cycle_distance;
 use crate::error::FieldError;
 
-/// Which oscillators.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// Which oscillators (a CPG file's `model`: `phase` or `van_der_pol`).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Model {
+    #[default]
     Phase,
     /// Van der Pol oscillators (amplitude and phase).
     VanDerPol,
@@ -46,6 +49,21 @@ pub struct State {
     pub theta: Vec<f64>,
     pub x: Vec<f64>,
     pub v: Vec<f64>,
+}
+
+/// The integrator's buffers (see [`Network::step_in`]).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Scratch {
+    y: Vec<f64>,
+    k: [Vec<f64>; 4],
+    probe: Vec<f64>,
+}
+
+/// `out` = `y` + `h` · `rate`.
+fn stage(y: &[f64], rate: &[f64], h: f64, out: &mut [f64]) {
+    for ((o, a), r) in out.iter_mut().zip(y).zip(rate) {
+        *o = a + h * r;
+    }
 }
 
 /// The most oscillators a network may have.
@@ -132,10 +150,12 @@ impl Network {
         }
     }
 
-    fn pack(&self, s: &State) -> Vec<f64> {
+    /// The state packed for the integrator (θ, or x then v) into `out`.
+    fn pack(&self, s: &State, out: &mut Vec<f64>) {
+        out.clear();
         match self.model {
-            Model::Phase => s.theta.clone(),
-            Model::VanDerPol => s.x.iter().chain(&s.v).copied().collect(),
+            Model::Phase => out.extend_from_slice(&s.theta),
+            Model::VanDerPol => out.extend(s.x.iter().chain(&s.v)),
         }
     }
 
@@ -159,21 +179,51 @@ impl Network {
 
     /// One RK4 step of `h` seconds.
     pub fn step(&self, s: &mut State, h: f64) {
-        let y = self.pack(s);
+        self.step_in(s, h, &mut Scratch::default());
+    }
+
+    /// One RK4 step of `h` seconds, in `scratch`'s buffers (a long run
+    /// allocates them once): the one integrator of every network, the
+    /// CPG file's (`kinolab cpg`) and the lab's.
+    pub fn step_in(&self, s: &mut State, h: f64, scratch: &mut Scratch) {
+        let Scratch { y, k, probe } = scratch;
+        self.pack(s, y);
         let m = y.len();
-        let (mut k1, mut k2, mut k3, mut k4) =
-            (vec![0.0; m], vec![0.0; m], vec![0.0; m], vec![0.0; m]);
-        let probe =
-            |k: &[f64], f: f64| -> Vec<f64> { y.iter().zip(k).map(|(a, b)| a + f * b).collect() };
-        self.rates(&y, &mut k1);
-        self.rates(&probe(&k1, h / 2.0), &mut k2);
-        self.rates(&probe(&k2, h / 2.0), &mut k3);
-        self.rates(&probe(&k3, h), &mut k4);
-        let next: Vec<f64> = (0..m)
-            .map(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
-            .collect();
-        self.unpack(&next, s);
+        for buffer in k.iter_mut().chain([&mut *probe]) {
+            buffer.clear();
+            buffer.resize(m, 0.0);
+        }
+        let [k1, k2, k3, k4] = k;
+        self.rates(y, k1);
+        stage(y, k1, h / 2.0, probe);
+        self.rates(probe, k2);
+        stage(y, k2, h / 2.0, probe);
+        self.rates(probe, k3);
+        stage(y, k3, h, probe);
+        self.rates(probe, k4);
+        for i in 0..m {
+            probe[i] = y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+        self.unpack(probe, s);
         s.t += h;
+    }
+
+    /// Turn oscillator `i`'s phase on by `by` radians (a kick): a phase
+    /// oscillator's θ, or a Van der Pol oscillator's state turned about
+    /// its centre (x against −ẋ/ω), its amplitude kept.
+    pub fn kick(&self, s: &mut State, i: usize, by: f64) {
+        if i >= s.theta.len() {
+            return;
+        }
+        s.theta[i] += by;
+        if self.model == Model::VanDerPol {
+            let w = self.omega().max(1e-9);
+            let (c, sn) = (trig::cos(by), trig::sin(by));
+            let q = -s.v[i] / w;
+            let (x, q) = (s.x[i] * c - q * sn, s.x[i] * sn + q * c);
+            s.x[i] = x;
+            s.v[i] = -w * q;
+        }
     }
 
     /// Each oscillator's lag behind the first, in cycles: ((θ₀ − θᵢ)/2π) mod 1.
@@ -235,9 +285,13 @@ mod tests {
             legs: ["LF", "RF", "LH", "RH"].map(String::from).to_vec(),
             target_phases: vec![0.25, 0.75, 0.0, 0.5],
             weight: 2.0,
+            weights: None,
+            model: Default::default(),
             initial_deg: vec![0.0, 10.0, 20.0, 30.0],
             dt: 0.001,
             duration: 10.0,
+            kicks: Vec::new(),
+            changes: Vec::new(),
         };
         let mut net = quadruped("quadruped-crawl", Model::Phase, 2.0);
         net.phases = cpg.target_phases.clone();

@@ -105,24 +105,25 @@ pub struct CpgReport {
     pub final_deg: Vec<f64>,
     /// ((θ₀ − θᵢ)/2π) mod 1.
     pub lag: Vec<f64>,
-    /// The lags the coupling aims at: (φᵢ − φ₀) mod 1.
+    /// The lags the coupling aims at in the end: (φᵢ − φ₀) mod 1.
     pub target_lag: Vec<f64>,
     pub locked: bool,
     pub steps: usize,
 }
 
 pub fn cpg(c: &crate::Cpg) -> Result<CpgReport, FieldError> {
-    let s = c.run()?;
-    Ok(CpgReport {
-        legs: c.legs.clone(),
+    Ok(settled(&c.legs, c.run()?))
+}
+
+/// What `kinolab cpg` prints for a run that ended at `s` (the lab's CPG
+/// widget shows the same numbers at the instant it shows).
+pub fn settled(legs: &[String], s: crate::cpg::Settled) -> CpgReport {
+    CpgReport {
+        legs: legs.to_vec(),
         final_deg: s.theta.iter().map(|t| t.to_degrees()).collect(),
         lag: s.lag,
-        target_lag: c
-            .target_phases
-            .iter()
-            .map(|p| (p - c.target_phases[0]).rem_euclid(1.0))
-            .collect(),
+        target_lag: s.target_lag,
         locked: s.locked,
         steps: s.steps,
-    })
+    }
 }

@@ -57,9 +57,13 @@ fn crawl_network(initial_deg: Vec<f64>) -> kinolab_locomotion::Cpg {
         legs: ["LF", "RF", "LH", "RH"].map(String::from).to_vec(),
         target_phases: vec![0.25, 0.75, 0.0, 0.5],
         weight: 2.0,
+        weights: None,
+        model: Default::default(),
         initial_deg,
         dt: 0.005,
         duration: 20.0,
+        kicks: Vec::new(),
+        changes: Vec::new(),
     }
 }
 

@@ -185,7 +185,8 @@ fn the_push_exercise_wants_the_capture_limit() {
     h.run_steps(3);
     // A push draws the run and its plot (every label must have its glyphs).
     h.get_by_label("Push").click();
-    h.run_steps(5);
+    // The push plays on the player at 1×: its 4 s at a tenth of a second a step.
+    h.run_steps(45);
     h.get_by_label_contains("Caught: the capture point stayed on the foot");
     h.get_by_label("Check").click();
     h.run_steps(2);

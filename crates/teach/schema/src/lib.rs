@@ -205,7 +205,7 @@ mod tests {
         );
         let e = validate(&spec("support-polygon", &[("colour", "red")])).unwrap_err();
         assert!(
-            e.contains("has no parameter `colour` (it takes: legs)"),
+            e.contains("has no parameter `colour` (it takes: legs, feet, lifted, com)"),
             "{e}"
         );
         let e = validate(&spec("wheel-drive", &[("mode", "fly")])).unwrap_err();

@@ -74,9 +74,13 @@ fn cpg_10s() -> f64 {
         legs: ["LF", "RF", "LH", "RH"].map(String::from).to_vec(),
         target_phases: vec![0.25, 0.75, 0.0, 0.5],
         weight: 2.0,
+        weights: None,
+        model: Default::default(),
         initial_deg: black_box(vec![0.0, 10.0, 20.0, 30.0]),
         dt: 0.001,
         duration: 10.0,
+        kicks: Vec::new(),
+        changes: Vec::new(),
     };
     cpg.run().map_or(f64::NAN, |s| s.theta[0])
 }

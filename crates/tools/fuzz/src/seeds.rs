@@ -91,7 +91,7 @@ impl Seeds {
                 .filter_map(kinolab_locomotion::named)
                 .map(|g| gait_json(&g))
                 .collect(),
-            cpgs: vec![CPG.to_owned()],
+            cpgs: vec![CPG.to_owned(), CPG_LAB.to_owned()],
             pushes: PUSHES.iter().map(|p| (*p).to_owned()).collect(),
             beaches: BEACHES.iter().map(|b| (*b).to_owned()).collect(),
             systems: files_in(&root.join("crates/talk/components/systems"), ".system.json"),
@@ -133,7 +133,6 @@ const CONTRACT_WORLD: &str = r#"{ "name": "two-rooms", "bounds": [0.0, 0.0, 10.0
     { "kind": "polygon", "points": [[5, 0], [5.2, 0], [5.2, 4], [5, 4]] },
     { "kind": "wall", "from": [7, 2], "to": [7, 6], "thickness": 0.1 } ] }"#;
 
-/// The contract's CPG example.
 /// Push-recovery runs: a push the foot holds, one it does not.
 const PUSHES: [&str; 2] = [
     r#"{ "height": 0.8, "heel": -0.05, "toe": 0.15, "push": 0.2 }"#,
@@ -146,9 +145,21 @@ const BEACHES: [&str; 2] = [
     r#"{ "seed": 11, "size": 1 }"#,
 ];
 
+/// The contract's CPG example.
 const CPG: &str = r#"{ "frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"],
   "target_phases": [0.25, 0.75, 0.0, 0.5], "weight": 2.0,
   "initial_deg": [0, 10, 20, 30], "dt": 0.001, "duration": 10.0 }"#;
+
+/// A run of the lab's CPG widget: Van der Pol oscillators, a weight per
+/// pair, kicks and a change of gait on the move.
+const CPG_LAB: &str = r#"{ "frequency": 1.0, "legs": ["LF", "RF", "LH", "RH"],
+  "target_phases": [0.0, 0.5, 0.5, 0.0], "weight": 1.0,
+  "weights": [[0, 1, 1, 1], [1, 0, 1, 1], [1, 1, 0, 1], [1.5, 1, 0.5, 0]],
+  "model": "van_der_pol", "initial_deg": [12, 250, 99, 301],
+  "dt": 0.001953125, "duration": 3.5,
+  "kicks": [ { "at": 1.0, "leg": 0, "by_deg": 90 }, { "at": 1.0, "leg": 3, "by_deg": 200.5 } ],
+  "changes": [ { "at": 2.0, "frequency": 1.8, "target_phases": [0.25, 0.75, 0.0, 0.5],
+                 "weights": [[0, 2, 2, 2], [2, 0, 2, 2], [2, 2, 0, 2], [2, 2, 2, 0]] } ] }"#;
 
 /// An open-loop run file (a plan instead of a controller).
 const OPEN_LOOP_RUN: &str = r#"{

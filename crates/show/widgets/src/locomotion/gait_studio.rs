@@ -1,33 +1,62 @@
 //! The gait studio: a walker's feet through one cycle, seen from above,
 //! with the support polygon and the stability margin at every instant, the
-//! footfall diagram and the margin over the cycle beside it. Scrub or play
-//! the cycle; change the duty factor, the stride, the centre of mass and
-//! each leg's lift-off phase.
+//! footfall diagram and the margin over the cycle beside it. The player
+//! plays, steps and scrubs the cycle; change the duty factor, the stride,
+//! the centre of mass and each leg's lift-off phase.
+
+use std::sync::Arc;
 
 use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, RichText, Sense, Stroke, vec2};
 use kinolab_common::display::fixed;
 use kinolab_locomotion::gait::{Instant, min_margin};
-use kinolab_locomotion::{Gait, named, named_ids, static_stability};
+use kinolab_locomotion::{Gait, named, static_stability};
 use serde::{Deserialize, Serialize};
 
-use super::{draw_foot, draw_support};
+use super::{draw_foot, draw_support, numbers_range, options};
 use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, canvas};
-use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::player::{Player, Simulation};
+use crate::theme;
+use crate::widget::{LabWidget, Params, SavedRun, range};
 
-/// Samples of the margin curve over one cycle.
-const CURVE_SAMPLES: usize = 240;
-/// Seconds one cycle takes when playing.
-const CYCLE_SECONDS: f64 = 3.0;
+/// The widget's name in the schema.
+const NAME: &str = "gait-studio";
+/// Instants of the cycle: the player's ticks, the margin curve, and the
+/// samples `kinolab gait --samples` prints (at τ = (k + ½)/N).
+const SAMPLES: usize = 360;
+/// Seconds one cycle takes at 1×, and so the time of a tick.
+const CYCLE_SECONDS: f64 = 6.0;
+const DT: f64 = CYCLE_SECONDS / SAMPLES as f64;
 /// A smallest margin below this, m, is called "only just" stable.
 const EDGE: f64 = 0.002;
 /// Below this width the panels stack.
 const NARROW: f32 = 620.0;
+/// The run file's name.
+const FILE: &str = "studio.gait.json";
 
-/// What the learner changed, and what a link carries.
+/// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Setup {
+struct Settings {
+    gait: String,
+    /// β, the stride and the phases: the gait's own when `None`.
+    duty_factor: Option<f64>,
+    stride: Option<f64>,
+    com: [f64; 2],
+    phases: Option<Vec<f64>>,
+    task: Option<Task>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum Task {
+    StaticPhases,
+}
+
+/// The links of the first format: the set-up and the instant τ.
+#[derive(Deserialize)]
+struct Legacy {
     preset: String,
     duty_factor: f64,
     stride: f64,
@@ -36,139 +65,281 @@ struct Setup {
     tau: f64,
 }
 
-struct GaitStudio {
-    setup: Setup,
-    initial: Setup,
-    /// The graded task's duty factor, when the lesson sets one: find phases
-    /// that keep the walker statically stable at this β.
-    task: Option<f64>,
-    feedback: Option<kinolab_common::Feedback>,
-    playing: bool,
-    /// The margin over the cycle, for `curve_key`.
-    curve: Vec<Instant>,
-    curve_key: Option<Setup>,
+impl Legacy {
+    /// The same set-up as settings (the schema checks the values), and τ
+    /// as the instant on the player.
+    fn settings(self, task: Option<Task>) -> Result<(Settings, Moment<()>), String> {
+        let numbers = [self.duty_factor, self.stride, self.tau];
+        if !numbers
+            .iter()
+            .chain(&self.com)
+            .chain(&self.phases)
+            .all(|x| x.is_finite())
+            || !(0.0..1.0).contains(&self.tau)
+        {
+            return Err("its numbers are damaged".into());
+        }
+        let k = (self.tau * SAMPLES as f64 - 0.5).round().max(0.0);
+        let moment = Moment {
+            instant: k * DT,
+            events: Vec::new(),
+        };
+        let settings = Settings {
+            gait: self.preset,
+            duty_factor: Some(self.duty_factor),
+            stride: Some(self.stride),
+            com: self.com,
+            phases: Some(self.phases),
+            task,
+        };
+        Ok((settings, moment))
+    }
 }
 
-pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let preset = p.choice("gait").unwrap_or("quadruped-crawl");
-    let mut setup = Setup::of(preset).ok_or_else(|| format!("no gait called `{preset}`"))?;
-    if let Some(beta) = p.number("duty_factor") {
-        setup.duty_factor = beta;
-    }
-    let task = (p.choice("task") == Some("static-phases")).then_some(setup.duty_factor);
-    if task.is_some() {
-        // Every leg lifting at once: the learner starts from the worst.
-        setup.phases.iter_mut().for_each(|p| *p = 0.0);
-    }
-    Ok(Box::new(GaitStudio {
-        initial: setup.clone(),
-        setup,
-        task,
-        feedback: None,
-        playing: false,
-        curve: Vec::new(),
-        curve_key: None,
-    }))
-}
-
-/// The gaits a lesson may start from.
-pub fn presets() -> impl Iterator<Item = &'static str> {
-    named_ids()
-}
-
-impl Setup {
-    fn of(preset: &str) -> Option<Self> {
-        let g = named(preset)?;
-        Some(Self {
-            preset: preset.to_owned(),
-            duty_factor: g.duty_factor,
-            stride: g.stride,
-            com: g.com,
-            phases: g.legs.iter().map(|l| l.phase).collect(),
-            tau: 0.0,
-        })
+impl Settings {
+    /// With the task, every leg lifts at once to begin with: the learner
+    /// starts from the worst.
+    fn for_task(mut self) -> Self {
+        if self.task.is_some() && self.phases.is_none() {
+            let legs = named(&self.gait).map_or(0, |g| g.legs.len());
+            self.phases = Some(vec![0.0; legs]);
+        }
+        self
     }
 
-    /// The gait this set-up describes: the preset's legs with these values.
+    /// The gait these settings describe: the named gait's legs with these
+    /// values.
     fn gait(&self) -> Option<Gait> {
-        let mut g = named(&self.preset)?;
-        g.duty_factor = self.duty_factor;
-        g.stride = self.stride;
+        let mut g = named(&self.gait)?;
+        g.duty_factor = self.duty_factor.unwrap_or(g.duty_factor);
+        g.stride = self.stride.unwrap_or(g.stride);
         g.com = self.com;
-        for (leg, phase) in g.legs.iter_mut().zip(&self.phases) {
-            leg.phase = *phase;
+        if let Some(phases) = &self.phases {
+            for (leg, phase) in g.legs.iter_mut().zip(phases) {
+                leg.phase = *phase;
+            }
         }
         g.check().ok().map(|()| g)
     }
 
-    /// Whether a set-up from a link fits its preset and the sliders' ranges.
-    fn valid(&self) -> bool {
-        let Some(g) = named(&self.preset) else {
-            return false;
-        };
-        self.phases.len() == g.legs.len()
-            && self.phases.iter().all(|p| (0.0..1.0).contains(p))
-            && (0.05..=0.95).contains(&self.duty_factor)
-            && (0.0..=0.4).contains(&self.stride)
-            && self.com.iter().all(|c| (-0.2..=0.2).contains(c))
-            && (0.0..1.0).contains(&self.tau)
+    /// The gait as a gait file (`kinolab gait` reads it).
+    fn gait_file(&self) -> Result<String, String> {
+        let gait = self.gait().ok_or("these settings make no gait")?;
+        serde_json::to_string_pretty(&gait).map_err(|e| e.to_string())
     }
 }
 
+/// The cycle, an instant a tick (the core samples it whole).
+#[derive(Debug, Clone)]
+struct Cycle {
+    instants: Arc<Vec<Instant>>,
+    k: usize,
+}
+
+impl Simulation for Cycle {
+    type Tick = ();
+    type Event = ();
+
+    fn step(&mut self) -> Option<()> {
+        if self.k + 1 >= self.instants.len() {
+            return None;
+        }
+        self.k += 1;
+        Some(())
+    }
+
+    fn time(&self) -> f64 {
+        self.k as f64 * DT
+    }
+
+    fn dt(&self) -> f64 {
+        DT
+    }
+
+    fn spring(&mut self, (): &()) {}
+}
+
+struct GaitStudio {
+    settings: Settings,
+    initial: Settings,
+    feedback: Option<kinolab_common::Feedback>,
+    /// The gait the settings make, its cycle, and the player that plays it.
+    gait: Option<Gait>,
+    curve: Arc<Vec<Instant>>,
+    player: Player<Cycle>,
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let settings = p.settings::<Settings>()?.for_task();
+    if named(&settings.gait).is_none() {
+        return Err(format!("no gait called `{}`", settings.gait));
+    }
+    Ok(Box::new(GaitStudio::new(settings)))
+}
+
 impl GaitStudio {
+    fn new(settings: Settings) -> Self {
+        let mut w = Self {
+            initial: settings.clone(),
+            settings,
+            feedback: None,
+            gait: None,
+            curve: Arc::default(),
+            player: Player::new(Cycle {
+                instants: Arc::default(),
+                k: 0,
+            }),
+        };
+        w.rebuild();
+        w
+    }
+
+    /// The cycle the settings make, at the instant shown before (the
+    /// cycle is a function of τ alone, so the instant stays).
+    fn rebuild(&mut self) {
+        let (k, playing) = (self.player.cursor(), self.player.playing);
+        self.gait = self.settings.gait();
+        let instants = self
+            .gait
+            .as_ref()
+            .map_or_else(Vec::new, |g| g.sample(SAMPLES));
+        self.curve = Arc::new(instants);
+        self.player = Player::new(Cycle {
+            instants: self.curve.clone(),
+            k: 0,
+        });
+        self.player.seek(k);
+        self.player.playing = playing;
+    }
+
+    /// The instant shown.
+    fn now(&mut self) -> Option<Instant> {
+        let k = self.player.state().k;
+        self.curve.get(k).cloned()
+    }
+
+    /// The duty factor the task fixes: the lesson's.
+    fn task_beta(&self) -> Option<f64> {
+        self.settings.task?;
+        self.initial.gait().map(|g| g.duty_factor)
+    }
+
     fn controls(&mut self, ui: &mut egui::Ui, gait: &Gait) {
+        let before = self.settings.clone();
+        let s = &mut self.settings;
         crate::widget::control_row(ui, |ui| {
-            let before = self.setup.preset.clone();
+            let chosen = s.gait.clone();
             egui::ComboBox::new(ui.scope_id().with("preset"), "gait")
-                .selected_text(&self.setup.preset)
+                .selected_text(&s.gait)
                 .show_ui(ui, |ui| {
-                    for id in presets() {
-                        ui.selectable_value(&mut self.setup.preset, id.to_owned(), id);
+                    for id in options(NAME, "gait") {
+                        ui.selectable_value(&mut s.gait, (*id).to_owned(), *id);
                     }
                 });
-            if self.setup.preset != before
-                && let Some(s) = Setup::of(&self.setup.preset)
-            {
-                self.setup = s;
+            if s.gait != chosen {
+                // Another gait: its own β, stride and phases.
+                (s.duty_factor, s.stride, s.phases) = (None, None, None);
             }
-            let label = if self.playing { "Pause" } else { "Play" };
-            if ui.button(label).clicked() {
-                self.playing = !self.playing;
-            }
-            ui.add(egui::Slider::new(&mut self.setup.tau, 0.0..=0.999).text("τ (cycle)"));
+        });
+        let mut beta = gait.duty_factor;
+        let mut stride = gait.stride;
+        let mut phases: Vec<f64> = gait.legs.iter().map(|l| l.phase).collect();
+        crate::widget::control_row(ui, |ui| {
+            ui.add(egui::Slider::new(&mut beta, range(NAME, "duty_factor")).text("β duty factor"));
+            ui.add(egui::Slider::new(&mut stride, range(NAME, "stride")).text("L stride (m)"));
         });
         crate::widget::control_row(ui, |ui| {
-            ui.add(
-                egui::Slider::new(&mut self.setup.duty_factor, 0.05..=0.95).text("β duty factor"),
-            );
-            ui.add(egui::Slider::new(&mut self.setup.stride, 0.0..=0.4).text("L stride (m)"));
+            let com = numbers_range(NAME, "com");
+            ui.add(egui::Slider::new(&mut s.com[0], com.clone()).text("CoM x (m)"));
+            ui.add(egui::Slider::new(&mut s.com[1], com).text("CoM y (m)"));
         });
         crate::widget::control_row(ui, |ui| {
-            ui.add(egui::Slider::new(&mut self.setup.com[0], -0.2..=0.2).text("CoM x (m)"));
-            ui.add(egui::Slider::new(&mut self.setup.com[1], -0.2..=0.2).text("CoM y (m)"));
-        });
-        crate::widget::control_row(ui, |ui| {
-            for (leg, phase) in gait.legs.iter().zip(self.setup.phases.iter_mut()) {
+            for (leg, phase) in gait.legs.iter().zip(phases.iter_mut()) {
                 ui.add(
-                    egui::Slider::new(phase, 0.0..=0.999)
+                    egui::Slider::new(phase, numbers_range(NAME, "phases"))
                         .text(format!("φ {}", leg.name))
                         .max_decimals(3),
                 );
             }
         });
+        if s.gait == before.gait {
+            if beta != gait.duty_factor {
+                s.duty_factor = Some(beta);
+            }
+            if stride != gait.stride {
+                s.stride = Some(stride);
+            }
+            if gait.legs.iter().zip(&phases).any(|(l, p)| l.phase != *p) {
+                s.phases = Some(phases);
+            }
+        }
+        if self.settings != before {
+            self.rebuild();
+        }
     }
 
-    /// The margin over the cycle, recomputed only when the gait changes.
-    fn curve(&mut self, gait: &Gait) -> &[Instant] {
-        let key = Setup {
-            tau: 0.0,
-            ..self.setup.clone()
+    /// The cycle's instants as a table: τ, the margin (blank with no foot
+    /// down) and whether each leg stands.
+    fn cycle_csv(&self) -> String {
+        let Some(gait) = &self.gait else {
+            return String::new();
         };
-        if self.curve_key.as_ref() != Some(&key) {
-            self.curve = gait.sample(CURVE_SAMPLES);
-            self.curve_key = Some(key);
+        let mut out = String::from("tau,margin (m)");
+        for leg in &gait.legs {
+            out += &format!(",{} stands", leg.name);
         }
-        &self.curve
+        out.push('\n');
+        for s in self.curve.iter() {
+            let margin = s.margin.map(|m| m.to_string()).unwrap_or_default();
+            out += &format!("{},{margin}", s.tau);
+            for i in 0..gait.legs.len() {
+                out += if s.stance.contains(&i) { ",1" } else { ",0" };
+            }
+            out.push('\n');
+        }
+        out
+    }
+
+    fn exports(&self, ui: &mut egui::Ui, view: Rect) {
+        let csv = || self.cycle_csv();
+        let file = || self.settings.gait_file();
+        let command = format!("kinolab gait {FILE} --samples {SAMPLES}");
+        export::bar(
+            ui,
+            ui.scope_id().with("gait-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-gait.png",
+                    rect: view,
+                },
+                Export::Csv {
+                    file: "kinolab-gait.csv",
+                    make: &csv,
+                },
+                Export::Run {
+                    file: FILE,
+                    command: &command,
+                    make: &file,
+                },
+            ],
+        );
+    }
+
+    /// The task's line and its check.
+    fn task_ui(&mut self, ui: &mut egui::Ui, gait: &Gait) {
+        let Some(beta) = self.task_beta() else {
+            return;
+        };
+        if ui.button("Check my phases").clicked() {
+            self.feedback = Some(
+                kinolab_locomotion::exercise::static_phases(gait, beta)
+                    .unwrap_or_else(|e| kinolab_common::Feedback::from_error(&e)),
+            );
+        }
+        ui.label(RichText::new(format!(
+            "Task: keep β = {} and set the lift-off phases φ so the walker is statically stable at every instant of the cycle.",
+            fixed(beta, 2)
+        )).small());
     }
 }
 
@@ -230,23 +401,16 @@ fn top_view(ui: &egui::Ui, painter: &Painter, rect: Rect, gait: &Gait, now: &Ins
     );
 }
 
-/// The footfall diagram (a bar per leg where it stands) over the margin
-/// curve, both against τ, with a cursor at `tau`.
-fn cycle_view(
+/// The footfall diagram: a row per leg, a bar where it stands.
+fn footfalls(
     ui: &egui::Ui,
     painter: &Painter,
     rect: Rect,
     gait: &Gait,
-    curve: &[Instant],
-    tau: f64,
+    row_h: f32,
+    x_of: &dyn Fn(f64) -> f32,
 ) {
     let ink = ui.visuals().text_color();
-    let weak = ui.visuals().weak_text_color();
-    let left = rect.left() + 34.0;
-    let width = rect.right() - 8.0 - left;
-    let x_of = |t: f64| left + width * t as f32;
-    let rows = gait.legs.len() as f32;
-    let row_h = ((rect.height() * 0.5) / rows).min(18.0);
     for (i, leg) in gait.legs.iter().enumerate() {
         let y = rect.top() + 8.0 + row_h * i as f32;
         painter.text(
@@ -269,6 +433,25 @@ fn cycle_view(
             }
         }
     }
+}
+
+/// The footfall diagram (a bar per leg where it stands) over the margin
+/// curve, both against τ, with a cursor at `tau`.
+fn cycle_view(
+    ui: &egui::Ui,
+    painter: &Painter,
+    rect: Rect,
+    gait: &Gait,
+    curve: &[Instant],
+    tau: f64,
+) {
+    let weak = ui.visuals().weak_text_color();
+    let left = rect.left() + 34.0;
+    let width = rect.right() - 8.0 - left;
+    let x_of = |t: f64| left + width * t as f32;
+    let rows = gait.legs.len() as f32;
+    let row_h = ((rect.height() * 0.5) / rows).min(18.0);
+    footfalls(ui, painter, rect, gait, row_h, &x_of);
     let top = rect.top() + 16.0 + row_h * rows;
     let plot = Rect::from_min_max(
         Pos2::new(left, top),
@@ -376,62 +559,40 @@ fn verdict(gait: &Gait, curve: &[Instant]) -> (bool, String) {
 
 impl LabWidget for GaitStudio {
     fn ui(&mut self, ui: &mut egui::Ui) {
-        let Some(gait) = self.setup.gait() else {
-            self.setup = self.initial.clone();
+        let Some(gait) = self.gait.clone() else {
+            self.settings = self.initial.clone();
+            self.rebuild();
             return;
         };
         self.controls(ui, &gait);
-        let Some(gait) = self.setup.gait() else {
+        let Some(gait) = self.gait.clone() else {
             return;
         };
-        if self.playing {
-            let dt = crate::widget::frame_dt(ui);
-            self.setup.tau = (self.setup.tau + dt / CYCLE_SECONDS)
-                .rem_euclid(1.0)
-                .min(0.999);
-            crate::widget::animate(ui);
-        }
-        let now = gait.at(self.setup.tau);
-        let tau = self.setup.tau;
-        let curve = self.curve(&gait).to_vec();
+        self.player.controls(ui);
+        let Some(now) = self.now() else {
+            return;
+        };
         let width = ui.available_width();
         let narrow = width < NARROW;
-        let (w, h) = if narrow {
-            (width, 560.0)
-        } else {
-            (width, 300.0)
-        };
-        let (response, painter) = canvas(ui, vec2(w, h), Sense::hover());
+        let h = if narrow { 560.0 } else { 300.0 };
+        let (response, painter) = canvas(ui, vec2(width, h), Sense::hover());
         let rect = response.rect;
         let (a, b) = if narrow {
-            let (top, bottom) = rect.split_top_bottom_at_fraction(0.5);
-            (top, bottom)
+            rect.split_top_bottom_at_fraction(0.5)
         } else {
             rect.split_left_right_at_fraction(0.5)
         };
         top_view(ui, &painter, a, &gait, &now);
-        cycle_view(ui, &painter, b, &gait, &curve, tau);
-        let margin = now.margin.map_or("no foot down".to_owned(), |m| {
-            format!("margin {} cm", fixed(m * 100.0, 1))
-        });
-        // How far the polygon reaches ahead of and behind the CoM.
-        let margin = match kinolab_locomotion::longitudinal_margins(gait.com, &now.feet) {
-            Some((front, rear)) => format!(
-                "{margin}; the polygon reaches {} cm ahead and {} cm behind the CoM",
-                fixed(front * 100.0, 1),
-                fixed(rear * 100.0, 1)
-            ),
-            None => margin,
-        };
-        ui.label(
-            RichText::new(format!(
-                "At τ = {}: {} feet down, {margin}.",
-                fixed(tau, 3),
-                now.stance.len()
-            ))
-            .small(),
+        cycle_view(ui, &painter, b, &gait, &self.curve, now.tau);
+        self.player.timeline(
+            ui,
+            "The cycle, τ from 0 to 1",
+            SAMPLES - 1,
+            &mut |_, _, _, _| {},
         );
-        let (ok, text) = verdict(&gait, &curve);
+        self.player.run(ui, 60);
+        ui.label(RichText::new(instant_text(&gait, &now)).small());
+        let (ok, text) = verdict(&gait, &self.curve);
         let color = if ok {
             theme::good_color(ui)
         } else {
@@ -439,80 +600,181 @@ impl LabWidget for GaitStudio {
         };
         ui.label(RichText::new(text).strong().color(color));
         ui.horizontal_wrapped(|ui| {
-            if let Some(beta) = self.task
-                && ui.button("Check my phases").clicked()
-            {
-                self.feedback = Some(
-                    kinolab_locomotion::exercise::static_phases(&gait, beta)
-                        .unwrap_or_else(|e| kinolab_common::Feedback::from_error(&e)),
-                );
-            }
+            self.task_ui(ui, &gait);
             if ui.button("Reset").clicked() {
-                self.setup = self.initial.clone();
-                self.playing = false;
+                self.settings = self.initial.clone();
                 self.feedback = None;
+                self.rebuild();
             }
         });
-        if let Some(beta) = self.task {
-            ui.label(RichText::new(format!(
-                "Task: keep β = {} and set the lift-off phases φ so the walker is statically stable at every instant of the cycle.",
-                fixed(beta, 2)
-            )).small());
-        }
         crate::widget::feedback_ui(ui, self.feedback.as_ref());
+        self.exports(ui, rect);
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.setup, &self.initial)
+        link::write(NAME, &self.settings, &self.initial, &self.player.moment())
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(s) = link::decode::<Setup>(state)
-            && s.valid()
-        {
-            self.setup = s;
+        let (settings, moment) = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, moment)) => (settings.for_task(), moment),
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => old.settings(self.initial.task)?,
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema too.
+        link::check(NAME, &settings)?;
+        if settings.gait().is_none() {
+            return Err("its settings make no gait".into());
         }
+        self.settings = settings;
+        self.player = Player::new(Cycle {
+            instants: Arc::default(),
+            k: 0,
+        });
+        self.rebuild();
+        self.player.replay(&moment.events, moment.instant);
         Ok(())
     }
+
+    fn seek(&mut self, t: f64) {
+        self.player.seek_time(t);
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        let gait = self.gait.as_ref()?;
+        let report = kinolab_locomotion::report::gait(gait, SAMPLES).ok()?;
+        let shown = report.samples.get(..=self.player.cursor())?;
+        Some(SavedRun {
+            file: FILE.into(),
+            text: self.settings.gait_file().ok()?,
+            args: vec![
+                "gait".into(),
+                FILE.into(),
+                "--samples".into(),
+                SAMPLES.to_string(),
+            ],
+            shows: vec![(
+                "/samples".into(),
+                kinolab_common::display::tidy_report(&shown).ok()?,
+            )],
+        })
+    }
+}
+
+/// The instant in words: how many feet stand, the margin, and how far the
+/// polygon reaches ahead of and behind the centre of mass.
+fn instant_text(gait: &Gait, now: &Instant) -> String {
+    let margin = now.margin.map_or("no foot down".to_owned(), |m| {
+        format!("margin {} cm", fixed(m * 100.0, 1))
+    });
+    let margin = match kinolab_locomotion::longitudinal_margins(gait.com, &now.feet) {
+        Some((front, rear)) => format!(
+            "{margin}; the polygon reaches {} cm ahead and {} cm behind the CoM",
+            fixed(front * 100.0, 1),
+            fixed(rear * 100.0, 1)
+        ),
+        None => margin,
+    };
+    format!(
+        "At τ = {}: {} feet down, {margin}.",
+        fixed(now.tau, 3),
+        now.stance.len()
+    )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::registry::spec;
+
+    fn widget(params: &[(&str, &str)]) -> GaitStudio {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        GaitStudio::new(
+            p.settings::<Settings>()
+                .unwrap_or_else(|e| panic!("{e}"))
+                .for_task(),
+        )
+    }
 
     #[test]
-    fn every_preset_makes_a_valid_set_up() {
-        for id in presets() {
-            let s = Setup::of(id).unwrap();
-            assert!(s.valid(), "{id}");
-            assert!(s.gait().is_some(), "{id}");
+    fn every_gait_makes_a_cycle() {
+        for id in options(NAME, "gait") {
+            let w = widget(&[("gait", *id)]);
+            assert!(w.gait.is_some(), "{id}");
+            assert_eq!(w.curve.len(), SAMPLES, "{id}");
         }
     }
 
     #[test]
     fn the_verdict_names_mcghee_and_frank_for_a_slow_quadruped() {
-        let mut s = Setup::of("quadruped-crawl").unwrap();
+        let mut w = widget(&[("gait", "quadruped-crawl")]);
         // At β = 3/4 the crawl's margin touches zero when a hind foot lifts.
-        let g = s.gait().unwrap();
-        let (ok, text) = verdict(&g, &g.sample(CURVE_SAMPLES));
+        let g = w.settings.gait().unwrap();
+        let (ok, text) = verdict(&g, &g.sample(SAMPLES));
         assert!(!ok && text.starts_with("Only just"), "{text}");
-        s.duty_factor = 0.8;
-        let g = s.gait().unwrap();
-        let (ok, text) = verdict(&g, &g.sample(CURVE_SAMPLES));
+        w.settings.duty_factor = Some(0.8);
+        let g = w.settings.gait().unwrap();
+        let (ok, text) = verdict(&g, &g.sample(SAMPLES));
         assert!(ok, "{text}");
-        s.duty_factor = 0.7;
-        let g = s.gait().unwrap();
-        let (ok, text) = verdict(&g, &g.sample(CURVE_SAMPLES));
+        w.settings.duty_factor = Some(0.7);
+        let g = w.settings.gait().unwrap();
+        let (ok, text) = verdict(&g, &g.sample(SAMPLES));
         assert!(!ok && text.contains("3/4"), "{text}");
     }
 
     #[test]
-    fn damaged_links_are_ignored() {
-        let mut s = Setup::of("hexapod-tripod").unwrap();
-        s.phases.pop();
-        assert!(!s.valid());
-        let mut s = Setup::of("hexapod-tripod").unwrap();
-        s.duty_factor = 1.0;
-        assert!(!s.valid());
+    fn a_link_of_the_first_format_still_opens_at_its_tau() {
+        let old = (
+            "hexapod-tripod".to_owned(),
+            0.6_f64,
+            0.25_f64,
+            [0.01_f64, -0.02],
+            vec![0.0_f64, 0.5, 0.0, 0.5, 0.0, 0.5],
+            0.5_f64,
+        );
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&link::encode(&old).unwrap_or_default()), Ok(()));
+        assert_eq!(w.settings.gait, "hexapod-tripod");
+        assert_eq!(w.settings.duty_factor, Some(0.6));
+        assert_eq!(w.settings.com, [0.01, -0.02]);
+        let now = w.now().unwrap();
+        assert!((now.tau - 0.5).abs() <= 0.5 / SAMPLES as f64, "{}", now.tau);
+        // A phase missing, or β out of the schema's range: refused, the
+        // lesson's settings kept.
+        let mut short = old.clone();
+        short.4.pop();
+        let mut w = widget(&[("gait", "quadruped-crawl")]);
+        assert!(
+            w.restore(&link::encode(&short).unwrap_or_default())
+                .is_err()
+        );
+        let mut wide = old;
+        wide.1 = 1.0;
+        assert!(w.restore(&link::encode(&wide).unwrap_or_default()).is_err());
+        assert_eq!(w.settings, w.initial);
+    }
+
+    #[test]
+    fn the_instant_travels_in_the_link() {
+        let mut w = widget(&[("gait", "quadruped-crawl")]);
+        w.settings.phases = Some(vec![0.0, 0.5, 0.75, 0.25]);
+        w.rebuild();
+        w.seek(1.2);
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+        assert_eq!(again.now(), w.now());
+        assert_eq!(again.saved_run(), w.saved_run());
+        assert_eq!(w.cycle_csv().lines().count(), SAMPLES + 1);
+    }
+
+    #[test]
+    fn the_task_starts_with_every_leg_lifting_at_once() {
+        let w = widget(&[("gait", "quadruped-crawl"), ("task", "static-phases")]);
+        assert_eq!(w.settings.phases, Some(vec![0.0; 4]));
+        assert_eq!(w.task_beta(), Some(0.75));
     }
 }

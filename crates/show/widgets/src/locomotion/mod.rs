@@ -14,6 +14,33 @@ use kinolab_locomotion::Stability;
 use crate::draw::PlaneView;
 use crate::draw::labels::Labels;
 
+/// The values a `Choice` parameter of `widget` allows, from its schema
+/// (so a list of gaits is written only there).
+fn options(widget: &str, param: &str) -> &'static [&'static str] {
+    match kinolab_schema::find(widget)
+        .and_then(|w| w.param(param))
+        .map(|p| &p.kind)
+    {
+        Some(kinolab_schema::Kind::Choice { options }) => options,
+        _ => &[],
+    }
+}
+
+/// The range each number of a `Numbers` or `Groups` parameter of
+/// `widget` allows, from its schema.
+fn numbers_range(widget: &str, param: &str) -> std::ops::RangeInclusive<f64> {
+    match kinolab_schema::find(widget)
+        .and_then(|w| w.param(param))
+        .map(|p| &p.kind)
+    {
+        Some(
+            kinolab_schema::Kind::Numbers { min, max, .. }
+            | kinolab_schema::Kind::Groups { min, max, .. },
+        ) => *min..=*max,
+        _ => crate::widget::range(widget, param),
+    }
+}
+
 /// The support polygon (filled when it has an area), the shortest line from
 /// the centre of mass to its edge, and both kept clear of labels.
 fn draw_support(

@@ -9,60 +9,123 @@ use serde::{Deserialize, Serialize};
 use super::{draw_foot, draw_support};
 use crate::draw::labels::Labels;
 use crate::draw::{PlaneView, canvas, handle, marks};
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
 use crate::widget::{LabWidget, Params};
-use crate::{link, theme};
 
-/// Half-extent of the visible ground, metres.
+/// The widget's name in the schema.
+const NAME: &str = "support-polygon";
+
+/// Half-extent of the visible ground, metres (the schema's bounds).
 const VIEW_HALF_WIDTH: f64 = 0.5;
 const VIEW_HALF_HEIGHT: f64 = 0.32;
 
+/// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    legs: u32,
+    /// Where each foot stands (spread around the body when `None`).
+    feet: Option<Vec<Point>>,
+    /// The feet off the ground, by number from 1 (`None`: none).
+    lifted: Option<Vec<f64>>,
+    com: Point,
+}
+
+/// The links of the first format: the feet and the centre of mass.
+#[derive(Deserialize)]
+struct Legacy {
+    feet: Vec<LegacyFoot>,
+    com: Point,
+}
+
+#[derive(Deserialize)]
+struct LegacyFoot {
+    at: Point,
+    on_ground: bool,
+}
+
+impl Legacy {
+    /// The same stance as settings (the schema checks the values).
+    fn settings(self) -> Result<Settings, String> {
+        let finite = self
+            .feet
+            .iter()
+            .flat_map(|f| f.at)
+            .chain(self.com)
+            .all(f64::is_finite);
+        if !finite {
+            return Err("its feet are not all on the ground plane".into());
+        }
+        let lifted: Vec<f64> = (1..)
+            .zip(&self.feet)
+            .filter(|(_, f)| !f.on_ground)
+            .map(|(n, _)| f64::from(n))
+            .collect();
+        Ok(Settings {
+            legs: u32::try_from(self.feet.len()).map_err(|e| e.to_string())?,
+            feet: Some(self.feet.iter().map(|f| f.at).collect()),
+            lifted: (!lifted.is_empty()).then_some(lifted),
+            com: self.com,
+        })
+    }
+}
+
 struct Foot {
     at: Point,
     on_ground: bool,
 }
 
-/// Everything the learner can change, and what a link carries.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Stance {
-    feet: Vec<Foot>,
-    com: Point,
-}
-
 struct SupportPolygon {
-    stance: Stance,
-    initial: Stance,
+    settings: Settings,
+    initial: Settings,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let legs = p.integer("legs").unwrap_or(4).clamp(3, 8) as usize;
-    let stance = Stance::new(legs);
+    let settings: Settings = p.settings()?;
     Ok(Box::new(SupportPolygon {
-        initial: stance.clone(),
-        stance,
+        initial: settings.clone(),
+        settings,
     }))
 }
 
-impl Stance {
+impl Settings {
     /// Feet spread evenly on an ellipse around the body, starting front-left.
-    fn new(legs: usize) -> Self {
-        let feet = (0..legs)
+    fn spread(legs: u32) -> Vec<Point> {
+        (0..legs)
             .map(|i| {
-                let angle = std::f64::consts::TAU * (i as f64 + 0.5) / legs as f64;
-                Foot {
-                    at: [0.3 * angle.cos(), 0.2 * angle.sin()],
-                    on_ground: true,
-                }
+                let angle = std::f64::consts::TAU * (f64::from(i) + 0.5) / f64::from(legs);
+                [0.3 * angle.cos(), 0.2 * angle.sin()]
             })
+            .collect()
+    }
+
+    /// Every foot, where it is and whether it stands.
+    fn feet(&self) -> Vec<Foot> {
+        let at = self.feet.clone().unwrap_or_else(|| Self::spread(self.legs));
+        let lifted = self.lifted.as_deref().unwrap_or_default();
+        (1..)
+            .zip(at)
+            .map(|(n, at)| Foot {
+                at,
+                on_ground: !lifted.contains(&f64::from(n)),
+            })
+            .collect()
+    }
+
+    /// Take the feet back (as the learner left them).
+    fn set_feet(&mut self, feet: &[Foot]) {
+        self.feet = Some(feet.iter().map(|f| f.at).collect());
+        let lifted: Vec<f64> = (1..)
+            .zip(feet)
+            .filter(|(_, f)| !f.on_ground)
+            .map(|(n, _)| f64::from(n))
             .collect();
-        Self {
-            feet,
-            com: [0.0, 0.0],
-        }
+        self.lifted = (!lifted.is_empty()).then_some(lifted);
     }
 
     fn grounded(&self) -> Vec<Point> {
-        self.feet
+        self.feet()
             .iter()
             .filter(|f| f.on_ground)
             .map(|f| f.at)
@@ -88,7 +151,9 @@ impl SupportPolygon {
     /// foot to lift or lower it.
     fn input(&mut self, ui: &mut egui::Ui, view: &PlaneView) {
         let base = ui.scope_id().with("feet");
-        for (i, foot) in self.stance.feet.iter_mut().enumerate() {
+        let mut feet = self.settings.feet();
+        let mut moved_any = false;
+        for (i, foot) in feet.iter_mut().enumerate() {
             let state = if foot.on_ground {
                 "on the ground"
             } else {
@@ -98,11 +163,16 @@ impl SupportPolygon {
             let h = handle(ui, base.with(i), view.to_screen(foot.at), 12.0, &label);
             if h.dragged() {
                 foot.at = moved(view, foot.at, h.moved);
+                moved_any = true;
             } else if h.clicked() {
                 foot.on_ground = !foot.on_ground;
+                moved_any = true;
             }
         }
-        let com_at = view.to_screen(self.stance.com);
+        if moved_any {
+            self.settings.set_feet(&feet);
+        }
+        let com_at = view.to_screen(self.settings.com);
         let h = handle(
             ui,
             ui.scope_id().with("com"),
@@ -111,7 +181,7 @@ impl SupportPolygon {
             "Centre of mass",
         );
         if h.dragged() {
-            self.stance.com = moved(view, self.stance.com, h.moved);
+            self.settings.com = moved(view, self.settings.com, h.moved);
         }
     }
 
@@ -126,9 +196,9 @@ impl SupportPolygon {
         let mut labels = Labels::default();
         if let Some(s) = verdict {
             let color = verdict_color(ui, s);
-            draw_support(painter, &mut labels, view, s, self.stance.com, color);
+            draw_support(painter, &mut labels, view, s, self.settings.com, color);
         }
-        let com = view.to_screen(self.stance.com);
+        let com = view.to_screen(self.settings.com);
         labels.reserve(Rect::from_center_size(com, vec2(20.0, 20.0)));
         self.draw_feet(painter, &mut labels, view, ink);
         draw_com(painter, com, theme::accent(ui));
@@ -136,7 +206,7 @@ impl SupportPolygon {
     }
 
     fn draw_feet(&self, painter: &Painter, labels: &mut Labels, view: &PlaneView, ink: Color32) {
-        for (i, foot) in self.stance.feet.iter().enumerate() {
+        for (i, foot) in self.settings.feet().iter().enumerate() {
             let out = egui::Vec2::new(foot.at[0] as f32, -foot.at[1] as f32);
             let at = view.to_screen(foot.at);
             let name = (i + 1).to_string();
@@ -189,7 +259,7 @@ impl LabWidget for SupportPolygon {
             [VIEW_HALF_WIDTH, VIEW_HALF_HEIGHT],
         );
         self.input(ui, &view);
-        let verdict = static_stability(self.stance.com, &self.stance.grounded()).ok();
+        let verdict = static_stability(self.settings.com, &self.settings.grounded()).ok();
         self.draw(ui, &painter, &view, verdict.as_ref());
         painter.text(
             rect.right_top() + vec2(-10.0, 10.0),
@@ -206,40 +276,44 @@ impl LabWidget for SupportPolygon {
                 .strong()
                 .color(color),
         );
-        let lifted = self.stance.feet.iter().filter(|f| !f.on_ground).count();
+        let feet = self.settings.feet();
+        let lifted = feet.iter().filter(|f| !f.on_ground).count();
         ui.horizontal_wrapped(|ui| {
-            ui.label(RichText::new(format!("{lifted} of {} feet lifted. Drag a foot or the blue centre of mass; click a foot to lift or lower it.", self.stance.feet.len())).small());
+            ui.label(RichText::new(format!("{lifted} of {} feet lifted. Drag a foot or the blue centre of mass; click a foot to lift or lower it.", feet.len())).small());
             if ui.button("Reset stance").clicked() {
-                self.stance = self.initial.clone();
+                self.settings = self.initial.clone();
             }
         });
+        export::bar(
+            ui,
+            ui.scope_id().with("support-exports"),
+            &[Export::Png {
+                file: "kinolab-support-polygon.png",
+                rect,
+            }],
+        );
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.stance, &self.initial)
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(stance) = link::decode::<Stance>(state)
-            && stance.feet.len() == self.initial.feet.len()
-            && stance
-                .feet
-                .iter()
-                .all(|f| f.at.iter().all(|c| c.is_finite()))
-            && stance.com.iter().all(|c| c.is_finite())
-        {
-            self.stance = Stance {
-                feet: stance
-                    .feet
-                    .into_iter()
-                    .map(|f| Foot {
-                        at: clamp(f.at),
-                        ..f
-                    })
-                    .collect(),
-                com: clamp(stance.com),
-            };
-        }
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => old.settings()?,
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema too.
+        link::check(NAME, &settings)?;
+        self.settings = settings;
         Ok(())
     }
 }
@@ -264,5 +338,64 @@ mod tests {
             verdict_text(outside.as_ref()),
             "Tips over: the centre of mass is 5.0 cm outside the support polygon"
         );
+    }
+
+    fn widget(params: &[(&str, &str)]) -> SupportPolygon {
+        let spec = crate::registry::spec(NAME, params);
+        let p = kinolab_schema::validate(&spec).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        SupportPolygon {
+            initial: settings.clone(),
+            settings,
+        }
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        // The first format: each foot's place and whether it stands, and the CoM.
+        let feet = vec![
+            ([0.2, 0.1], true),
+            ([-0.2, 0.1], false),
+            ([-0.2, -0.1], true),
+            ([0.2, -0.1], true),
+        ];
+        let old = link::encode(&(feet.clone(), [0.05, -0.02])).unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(
+            w.settings.feet,
+            Some(feet.iter().map(|(at, _)| *at).collect())
+        );
+        assert_eq!(w.settings.lifted, Some(vec![2.0]));
+        assert_eq!(w.settings.com, [0.05, -0.02]);
+        assert_eq!(w.settings.grounded().len(), 3);
+        // A foot off the ground plane: refused, the lesson's stance kept.
+        let mut far = feet;
+        far[0].0 = [3.0, 0.0];
+        let bad = link::encode(&(far, [0.0, 0.0])).unwrap_or_default();
+        let mut w = widget(&[("legs", "4")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings, w.initial);
+    }
+
+    #[test]
+    fn a_moved_stance_travels_in_the_link() {
+        let mut w = widget(&[("legs", "5")]);
+        assert_eq!(w.state(), None);
+        let mut feet = w.settings.feet();
+        feet[1].at = [0.123_456_789, -0.3];
+        feet[3].on_ground = false;
+        w.settings.set_feet(&feet);
+        w.settings.com = [0.01, 0.02];
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+        assert_eq!(again.settings.grounded().len(), 4);
+        // Every foot down again: nothing lifted, and the link says so.
+        feet[3].on_ground = true;
+        w.settings.set_feet(&feet);
+        assert_eq!(w.settings.lifted, None);
+        assert!(w.state().is_some());
     }
 }
