@@ -64,5 +64,4 @@ fn reproduces(name: &str, dir: &std::path::Path) {
             );
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
