@@ -208,7 +208,7 @@ pub fn series_csv(x: &str, series: &[(&str, Vec<[f64; 2]>)]) -> String {
 }
 
 /// A CSV field, quoted when it holds a comma or a quote.
-fn csv_field(text: &str) -> String {
+pub fn csv_field(text: &str) -> String {
     if text.contains([',', '"', '\n']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {

@@ -39,9 +39,28 @@ impl Lifecycle {
     }
 }
 
+/// A copy of a component behind a box, so a whole runtime can be copied
+/// (the lab's player keeps copies to scrub back); every `Clone` component
+/// has it.
+pub trait ComponentClone {
+    fn clone_box(&self) -> Box<dyn Component>;
+}
+
+impl<T: Component + Clone + 'static> ComponentClone for T {
+    fn clone_box(&self) -> Box<dyn Component> {
+        Box::new(self.clone())
+    }
+}
+
+impl Clone for Box<dyn Component> {
+    fn clone(&self) -> Self {
+        self.clone_box()
+    }
+}
+
 /// The handlers of a component. Every handler has a default that ignores
 /// the call, so a component writes only the ones it needs.
-pub trait Component: std::fmt::Debug {
+pub trait Component: std::fmt::Debug + ComponentClone {
     fn interface(&self) -> Interface;
 
     /// Called once when initialising is over.

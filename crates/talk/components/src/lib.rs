@@ -27,7 +27,7 @@ pub mod trace;
 pub mod view;
 pub mod why;
 
-pub use component::{Component, Interface, Lifecycle};
+pub use component::{Component, ComponentClone, Interface, Lifecycle};
 pub use kinolab_common::FieldError;
 pub use link::Latency;
 pub use object::Object;

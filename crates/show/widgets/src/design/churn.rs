@@ -4,20 +4,43 @@
 
 use egui::{Align2, FontId, Pos2, RichText, Sense, Stroke, pos2, vec2};
 use kinolab_design::churn::{Design, Layer, SWAPS, naive, stable};
+use serde::{Deserialize, Serialize};
 
 use crate::draw::canvas;
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
 use crate::theme;
 use crate::widget::{LabWidget, Params};
 
+/// The widget's name in the schema.
+const NAME: &str = "technology-churn";
+
+/// What the lesson sets and a link carries: the schema's parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    /// The industrial object replaced (none yet when `None`).
+    swap: Option<String>,
+}
+
 struct Churn {
-    swap: Option<&'static str>,
+    settings: Settings,
+    initial: Settings,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let swap = p
-        .choice("swap")
-        .and_then(|s| SWAPS.iter().find(|(io, _)| *io == s).map(|(io, _)| *io));
-    Ok(Box::new(Churn { swap }))
+    let settings: Settings = p.settings()?;
+    Ok(Box::new(Churn {
+        initial: settings.clone(),
+        settings,
+    }))
+}
+
+impl Settings {
+    /// The object replaced, as the core names it.
+    fn swap(&self) -> Option<&'static str> {
+        let swap = self.swap.as_deref()?;
+        SWAPS.iter().map(|(io, _)| *io).find(|io| *io == swap)
+    }
 }
 
 /// Where each class sits: logic on top, business objects in the middle,
@@ -41,7 +64,14 @@ fn positions(design: &Design, rect: egui::Rect) -> Vec<(&'static str, Pos2)> {
     out
 }
 
-fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&str>, width: f32) {
+/// One design's class graph; where it was drawn.
+fn draw(
+    ui: &mut egui::Ui,
+    design: &Design,
+    edited: &[&str],
+    swapped: Option<&str>,
+    width: f32,
+) -> egui::Rect {
     let (response, painter) = canvas(ui, vec2(width, 230.0), Sense::hover());
     let rect = response.rect;
     let at = positions(design, rect.shrink2(vec2(6.0, 6.0)));
@@ -82,6 +112,7 @@ fn draw(ui: &mut egui::Ui, design: &Design, edited: &[&str], swapped: Option<&st
         painter.rect(r, 4.0, fill, outline, egui::StrokeKind::Inside);
         painter.text(p, Align2::CENTER_CENTER, c.name, font, ink);
     }
+    rect
 }
 
 /// A use drawn from box edge to box edge; between two classes in one row,
@@ -101,26 +132,10 @@ fn link_line(a: Pos2, b: Pos2) -> Vec<Pos2> {
     }
 }
 
-impl LabWidget for Churn {
-    fn ui(&mut self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
-            ui.label("Replace:");
-            for (io, what) in SWAPS {
-                if ui
-                    .selectable_label(self.swap == Some(io), io)
-                    .on_hover_text(what)
-                    .clicked()
-                {
-                    self.swap = Some(io);
-                }
-            }
-        });
-        ui.label(
-            RichText::new(
-                "blue: business logic · green: business objects · orange: industrial objects",
-            )
-            .small(),
-        );
+impl Churn {
+    /// The two designs side by side (one under the other when narrow);
+    /// where they were drawn.
+    fn designs(&self, ui: &mut egui::Ui) -> egui::Rect {
         let designs = [stable(), naive()];
         let wide = ui.available_width() >= 700.0;
         let width = if wide {
@@ -128,13 +143,11 @@ impl LabWidget for Churn {
         } else {
             ui.available_width()
         };
+        let swap = self.settings.swap();
         let show = |ui: &mut egui::Ui, d: &Design| {
             ui.vertical(|ui| {
-                let edited = self
-                    .swap
-                    .and_then(|io| d.churn(io).ok())
-                    .unwrap_or_default();
-                let title = match self.swap {
+                let edited = swap.and_then(|io| d.churn(io).ok()).unwrap_or_default();
+                let title = match swap {
                     Some(io) => format!(
                         "{} design: replacing {io} edits {} class{}: {}",
                         d.name,
@@ -146,19 +159,105 @@ impl LabWidget for Churn {
                 };
                 ui.set_width(width);
                 ui.label(RichText::new(title).strong());
-                draw(ui, d, &edited, self.swap, width);
-            });
+                draw(ui, d, &edited, swap, width);
+            })
+            .response
+            .rect
         };
         if wide {
             ui.horizontal_top(|ui| {
-                for d in &designs {
-                    show(ui, d);
-                }
-            });
+                let a = show(ui, &designs[0]);
+                a.union(show(ui, &designs[1]))
+            })
+            .inner
         } else {
-            for d in &designs {
-                show(ui, d);
+            let a = show(ui, &designs[0]);
+            a.union(show(ui, &designs[1]))
+        }
+    }
+}
+
+impl LabWidget for Churn {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("Replace:");
+            for (io, what) in SWAPS {
+                if ui
+                    .selectable_label(self.settings.swap() == Some(io), io)
+                    .on_hover_text(what)
+                    .clicked()
+                {
+                    self.settings.swap = Some(io.to_owned());
+                }
             }
+        });
+        ui.label(
+            RichText::new(
+                "blue: business logic · green: business objects · orange: industrial objects",
+            )
+            .small(),
+        );
+        let shown = self.designs(ui);
+        export::bar(
+            ui,
+            ui.scope_id().with("churn-exports"),
+            &[Export::Png {
+                file: "kinolab-technology-churn.png",
+                rect: shown,
+            }],
+        );
+    }
+
+    fn state(&self) -> Option<String> {
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
+    }
+
+    fn restore(&mut self, state: &str) -> Result<(), String> {
+        let (settings, _) = link::read::<Settings, ()>(NAME, state)?;
+        // A link is written only when something changed: one holding the
+        // lesson's own settings is not one of this widget's.
+        if settings == self.initial {
+            return Err("it holds nothing this widget would change".into());
+        }
+        self.settings = settings;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::spec;
+
+    #[test]
+    fn the_object_replaced_travels_in_the_link() {
+        let settings = |params: &[(&str, &str)]| -> Settings {
+            kinolab_schema::validate(&spec(NAME, params))
+                .and_then(|p| p.settings())
+                .unwrap_or_else(|e| panic!("{e}"))
+        };
+        let lesson = settings(&[]);
+        let mut w = Churn {
+            initial: lesson.clone(),
+            settings: lesson.clone(),
+        };
+        assert_eq!(w.state(), None);
+        w.settings.swap = Some("RosTopics".into());
+        let text = w.state().unwrap_or_default();
+        let mut again = Churn {
+            initial: lesson.clone(),
+            settings: lesson,
+        };
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings.swap(), Some("RosTopics"));
+        assert!(again.restore("b").is_err(), "nothing to change");
+        for (io, _) in SWAPS {
+            assert_eq!(settings(&[("swap", io)]).swap(), Some(io));
         }
     }
 }

@@ -9,57 +9,116 @@ use egui::{FontId, RichText, Sense, Stroke, pos2, vec2};
 use kinolab_common::display::fixed;
 use kinolab_design::morphology::{between, chain};
 use kinolab_mechanism::{Model, Pose};
+use serde::{Deserialize, Serialize};
 
 use crate::draw::canvas;
 use crate::draw::labels::Labels;
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
 use crate::theme;
 use crate::widget::{LabWidget, Params};
 
-const MECHANISMS: [&str; 3] = ["planar-3r", "rover-arm", "hexapod"];
+/// The widget's name in the schema.
+const NAME: &str = "morphology-builder";
 
-struct Morphology {
-    id: String,
-    model: Option<Model>,
-    q: Vec<f64>,
-    dissolved: Vec<usize>,
+/// What the lesson sets and a link carries: the schema's parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    mechanism: String,
+    /// The transform's ends, by body number (`to`: the last when `None`).
     from: usize,
-    to: usize,
+    to: Option<usize>,
+    /// Pairs whose port is deleted, by joint number (none when `None`).
+    dissolved: Option<Vec<f64>>,
+    /// Whether the plugged-in closed forms answer.
     commands: bool,
 }
 
+impl Settings {
+    /// The schema's settings for `mechanism`.
+    fn fresh(mechanism: &str) -> Result<Self, String> {
+        kinolab_schema::validate(&crate::registry::spec(NAME, &[("mechanism", mechanism)]))?
+            .settings()
+    }
+
+    /// The deleted pairs' numbers.
+    fn dissolved(&self) -> Vec<usize> {
+        self.dissolved
+            .iter()
+            .flatten()
+            .map(|j| *j as usize)
+            .collect()
+    }
+
+    fn set_dissolved(&mut self, joints: &[usize]) {
+        self.dissolved = (!joints.is_empty()).then(|| joints.iter().map(|j| *j as f64).collect());
+    }
+
+    /// The transform's last element: the one set, or `model`'s last.
+    fn to(&self, model: &Model) -> usize {
+        self.to
+            .unwrap_or_else(|| model.bodies().len().saturating_sub(1))
+    }
+
+    /// Whether every number names a body or a pair of `model`; why not.
+    fn fits(&self, model: &Model) -> Result<(), String> {
+        let bodies = model.bodies().len();
+        let joints = model.joints().len();
+        if self.from >= bodies || self.to.is_some_and(|t| t >= bodies) {
+            return Err(format!(
+                "`{}` has bodies 0 to {}",
+                self.mechanism,
+                bodies.saturating_sub(1)
+            ));
+        }
+        let whole = |j: &f64| j.fract() == 0.0 && (*j as usize) < joints;
+        if !self.dissolved.iter().flatten().all(whole) {
+            return Err(format!(
+                "`{}` has pairs 0 to {}",
+                self.mechanism,
+                joints.saturating_sub(1)
+            ));
+        }
+        Ok(())
+    }
+}
+
+struct Morphology {
+    settings: Settings,
+    initial: Settings,
+    model: Option<Model>,
+    q: Vec<f64>,
+}
+
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let settings: Settings = p.settings()?;
     let mut w = Morphology {
-        id: p.choice("mechanism").unwrap_or("planar-3r").to_owned(),
+        initial: settings.clone(),
+        settings,
         model: None,
         q: Vec::new(),
-        dissolved: Vec::new(),
-        from: 0,
-        to: 0,
-        commands: true,
     };
     w.load();
+    if let Some(model) = &w.model {
+        w.settings.fits(model)?;
+    }
     Ok(Box::new(w))
 }
 
 impl Morphology {
     fn load(&mut self) {
-        self.model = kinolab_mechanism::catalogue::mechanism(&self.id).ok();
+        self.model = kinolab_mechanism::catalogue::mechanism(&self.settings.mechanism).ok();
         self.q = self.model.as_ref().map_or_else(Vec::new, |m| {
             (0..m.dof())
                 .map(|i| 0.3 * ((i % 3) as f64 - 1.0) + 0.2)
                 .collect()
         });
-        self.dissolved.clear();
-        self.from = 0;
-        self.to = self
-            .model
-            .as_ref()
-            .map_or(0, |m| m.bodies().len().saturating_sub(1));
     }
 
     /// The flat graph: every element at its depth in the tree, pairs as
-    /// lines; a dissolved pair dashed, what hangs below it faded.
-    fn graph(&self, ui: &mut egui::Ui, model: &Model, width: f32) {
+    /// lines; a dissolved pair dashed, what hangs below it faded. Where it
+    /// was drawn.
+    fn graph(&self, ui: &mut egui::Ui, model: &Model, width: f32) -> egui::Rect {
         let n = model.bodies().len();
         let depth: Vec<usize> = (0..n).map(|b| chain(model, b).len()).collect();
         let max_depth = depth.iter().copied().max().unwrap_or(0);
@@ -82,12 +141,13 @@ impl Morphology {
                 + (rect.height() - 28.0) * (slot[b] as f32 + 0.5) / rows[depth[b]].max(1) as f32;
             pos2(x, y)
         };
-        let cut = |b: usize| chain(model, b).iter().any(|j| self.dissolved.contains(j));
+        let dissolved = self.settings.dissolved();
+        let cut = |b: usize| chain(model, b).iter().any(|j| dissolved.contains(j));
         let ink = ui.visuals().text_color();
         let faint = ui.visuals().weak_text_color();
         for (j, joint) in model.joints().iter().enumerate() {
             let (a, b) = (at(joint.parent), at(joint.child));
-            if self.dissolved.contains(&j) {
+            if dissolved.contains(&j) {
                 painter.add(egui::Shape::dashed_line(
                     &[a, b],
                     Stroke::new(1.5, theme::error_color(ui)),
@@ -101,7 +161,7 @@ impl Morphology {
                 );
             }
         }
-        let chosen = [self.from, self.to];
+        let chosen = [self.settings.from, self.settings.to(model)];
         let mut labels = Labels::default();
         for b in 0..n {
             labels.reserve(egui::Rect::from_center_size(at(b), vec2(10.0, 10.0)));
@@ -129,6 +189,7 @@ impl Morphology {
                 theme::GREEN,
             );
         }
+        rect
     }
 
     /// The hierarchy: the mechanism, its sub-mechanisms, their elements.
@@ -173,7 +234,8 @@ impl Morphology {
                         name(joint.parent),
                         name(joint.child)
                     ));
-                    let gone = self.dissolved.contains(&j);
+                    let mut dissolved = self.settings.dissolved();
+                    let gone = dissolved.contains(&j);
                     let label = if gone {
                         "restore the port"
                     } else {
@@ -181,10 +243,11 @@ impl Morphology {
                     };
                     if ui.small_button(label).clicked() {
                         if gone {
-                            self.dissolved.retain(|x| *x != j);
+                            dissolved.retain(|x| *x != j);
                         } else {
-                            self.dissolved.push(j);
+                            dissolved.push(j);
                         }
+                        self.settings.set_dissolved(&dissolved);
                     }
                 });
             }
@@ -193,8 +256,9 @@ impl Morphology {
 
     fn transform(&mut self, ui: &mut egui::Ui, model: &Model) {
         let names: Vec<String> = model.bodies().iter().map(|b| b.name.clone()).collect();
+        let mut to = self.settings.to(model);
         ui.horizontal_wrapped(|ui| {
-            for (label, pick) in [("from", &mut self.from), ("to", &mut self.to)] {
+            for (label, pick) in [("from", &mut self.settings.from), ("to", &mut to)] {
                 egui::ComboBox::from_label(label)
                     .selected_text(names.get(*pick).cloned().unwrap_or_default())
                     .show_ui(ui, |ui| {
@@ -204,7 +268,11 @@ impl Morphology {
                     });
             }
         });
-        match between(model, &self.q, self.from, self.to, &self.dissolved) {
+        if to != self.settings.to(model) {
+            self.settings.to = Some(to);
+        }
+        let (from, dissolved) = (self.settings.from, self.settings.dissolved());
+        match between(model, &self.q, from, to, &dissolved) {
             Some(t) => ui.label(RichText::new(format!("T(from → to): {}", describe(&t))).strong()),
             None => ui.label(
                 RichText::new("No transform: a dissolved pair lies on the path between them.")
@@ -214,10 +282,10 @@ impl Morphology {
         let commands = model.command_names();
         if let (false, Ok(tool)) = (commands.is_empty(), model.frame("tool")) {
             ui.checkbox(
-                &mut self.commands,
+                &mut self.settings.commands,
                 format!("use the plugged-in commands ({})", commands.join(", ")),
             );
-            let (pose, by) = if self.commands {
+            let (pose, by) = if self.settings.commands {
                 (model.pose(&self.q, &tool), commands[0])
             } else {
                 (model.pose_generic(&self.q, &tool), "the generic tree walk")
@@ -243,33 +311,124 @@ fn describe(t: &Pose) -> String {
 
 impl LabWidget for Morphology {
     fn ui(&mut self, ui: &mut egui::Ui) {
-        let before = self.id.clone();
+        let before = self.settings.mechanism.clone();
         egui::ComboBox::from_label("mechanism")
-            .selected_text(&self.id)
+            .selected_text(&self.settings.mechanism)
             .show_ui(ui, |ui| {
-                for m in MECHANISMS {
-                    ui.selectable_value(&mut self.id, m.to_owned(), m);
+                if let Some(kinolab_schema::Kind::Choice { options }) = kinolab_schema::find(NAME)
+                    .and_then(|w| w.param("mechanism"))
+                    .map(|p| &p.kind)
+                {
+                    for m in *options {
+                        ui.selectable_value(&mut self.settings.mechanism, (*m).to_owned(), *m);
+                    }
                 }
             });
-        if self.id != before {
+        if self.settings.mechanism != before {
+            // Another mechanism: its own numbers, as the schema sets them.
+            if let Ok(fresh) = Settings::fresh(&self.settings.mechanism) {
+                self.settings = fresh;
+            }
             self.load();
         }
         let Some(model) = self.model.clone() else {
-            crate::widget::error_box(ui, "No such mechanism", &self.id);
+            crate::widget::error_box(ui, "No such mechanism", &self.settings.mechanism);
             return;
         };
         ui.label(RichText::new("grey dots: elements (bodies) · lines: pairs (joints) · green squares: named ports (frames)").small());
         let width = ui.available_width();
-        if width >= 700.0 {
+        let graph = if width >= 700.0 {
             ui.horizontal_top(|ui| {
-                self.graph(ui, &model, width * 0.6);
+                let graph = self.graph(ui, &model, width * 0.6);
                 ui.vertical(|ui| self.hierarchy(ui, &model));
-            });
+                graph
+            })
+            .inner
         } else {
-            self.graph(ui, &model, width);
+            let graph = self.graph(ui, &model, width);
             self.hierarchy(ui, &model);
-        }
+            graph
+        };
+        export::bar(
+            ui,
+            ui.scope_id().with("morphology-exports"),
+            &[Export::Png {
+                file: "kinolab-morphology.png",
+                rect: graph,
+            }],
+        );
         self.transform(ui, &model);
         self.pairs(ui, &model);
+    }
+
+    fn state(&self) -> Option<String> {
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
+    }
+
+    fn restore(&mut self, state: &str) -> Result<(), String> {
+        let (settings, _) = link::read::<Settings, ()>(NAME, state)?;
+        // A link is written only when something changed: one holding the
+        // lesson's own settings is not one of this widget's.
+        if settings == self.initial {
+            return Err("it holds nothing this widget would change".into());
+        }
+        let model = kinolab_mechanism::catalogue::mechanism(&settings.mechanism)
+            .map_err(|e| e.to_string())?;
+        settings.fits(&model)?;
+        self.settings = settings;
+        self.load();
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::{create, spec};
+
+    fn widget(params: &[(&str, &str)]) -> Morphology {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        let mut w = Morphology {
+            initial: settings.clone(),
+            settings,
+            model: None,
+            q: Vec::new(),
+        };
+        w.load();
+        w
+    }
+
+    #[test]
+    fn the_learners_picks_travel_in_the_link() {
+        let mut w = widget(&[]);
+        w.settings.set_dissolved(&[1]);
+        w.settings.to = Some(2);
+        w.settings.commands = false;
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+        assert_eq!(again.settings.dissolved(), [1]);
+        // Numbers the mechanism does not have are refused.
+        let mut far = widget(&[]);
+        far.settings.set_dissolved(&[40]);
+        let text = far.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert!(again.restore(&text).is_err());
+        assert_eq!(again.settings, again.initial);
+        assert!(create(&spec(NAME, &[("to", "50")])).is_err());
+        assert!(
+            create(&spec(
+                NAME,
+                &[("mechanism", "hexapod"), ("dissolved", "3,4")]
+            ))
+            .is_ok()
+        );
     }
 }

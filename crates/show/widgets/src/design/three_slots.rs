@@ -12,76 +12,96 @@ use serde::{Deserialize, Serialize};
 
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
 use crate::draw::PlaneView;
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::theme;
 use crate::widget::{LabWidget, Params, feedback_ui};
-use crate::{link, theme};
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-struct Choice {
+/// The widget's name in the schema.
+const NAME: &str = "three-slots";
+
+/// What the lesson sets and a link carries: the schema's parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    body: String,
+    behaviours: String,
+    world: String,
+    task: Option<Task>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum Task {
+    FixTheCar,
+}
+
+/// The links of the first format: each slot by its place in the core's list.
+#[derive(Deserialize)]
+struct Legacy {
     body: usize,
     behaviours: usize,
     world: usize,
 }
 
-impl Choice {
-    fn names(self) -> (&'static str, &'static str, &'static str) {
-        (
-            BODIES[self.body],
-            BEHAVIOURS[self.behaviours],
-            WORLDS[self.world],
-        )
+/// `list`'s entry called `name`, as the core names it.
+fn named(list: &[&'static str], name: &str) -> Option<&'static str> {
+    list.iter().copied().find(|x| *x == name)
+}
+
+impl Settings {
+    /// The three slots as the core names them.
+    fn names(&self) -> Option<(&'static str, &'static str, &'static str)> {
+        Some((
+            named(&BODIES, &self.body)?,
+            named(&BEHAVIOURS, &self.behaviours)?,
+            named(&WORLDS, &self.world)?,
+        ))
     }
 }
 
 struct ThreeSlots {
-    choice: Choice,
-    initial: Choice,
+    settings: Settings,
+    initial: Settings,
     run: Option<(Outcome, RunReport)>,
     problem: Option<String>,
     /// The matrix so far, in bodies × behaviours × worlds order.
     matrix: Vec<Outcome>,
     /// Which slot changed last: 0 body, 1 behaviours, 2 world.
     changed: Option<usize>,
-    task: bool,
     feedback: Option<Feedback>,
 }
 
-fn index(list: &[&str], name: Option<&str>) -> usize {
-    name.and_then(|n| list.iter().position(|x| *x == n))
-        .unwrap_or(0)
-}
-
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let task = p.choice("task") == Some("fix-the-car");
-    let choice = if task {
-        Choice {
-            body: 1,
-            behaviours: 0,
-            world: 2,
-        }
-    } else {
-        Choice {
-            body: index(&BODIES, p.choice("body")),
-            behaviours: index(&BEHAVIOURS, p.choice("behaviours")),
-            world: index(&WORLDS, p.choice("world")),
-        }
-    };
-    let mut w = ThreeSlots {
-        choice,
-        initial: choice,
-        run: None,
-        problem: None,
-        matrix: Vec::new(),
-        changed: None,
-        task,
-        feedback: None,
-    };
-    w.rerun();
-    Ok(Box::new(w))
+    let mut settings: Settings = p.settings()?;
+    if settings.task == Some(Task::FixTheCar) {
+        // The task starts from the car failing in the maze.
+        settings.body = "car".into();
+        settings.behaviours = "go-and-avoid".into();
+        settings.world = "maze".into();
+    }
+    Ok(Box::new(ThreeSlots::new(settings)))
 }
 
 impl ThreeSlots {
+    fn new(settings: Settings) -> Self {
+        let mut w = ThreeSlots {
+            initial: settings.clone(),
+            settings,
+            run: None,
+            problem: None,
+            matrix: Vec::new(),
+            changed: None,
+            feedback: None,
+        };
+        w.rerun();
+        w
+    }
+
     fn rerun(&mut self) {
-        let (b, s, w) = self.choice.names();
+        let Some((b, s, w)) = self.settings.names() else {
+            self.problem = Some("no such slot".into());
+            return;
+        };
         match outcome(b, s, w) {
             Ok(r) => {
                 self.run = Some(r);
@@ -111,25 +131,27 @@ impl ThreeSlots {
     }
 
     fn slots(&mut self, ui: &mut egui::Ui) {
-        let before = self.choice;
-        let rows: [(&str, &[&str], &mut usize); 3] = [
-            ("body", &BODIES, &mut self.choice.body),
-            ("behaviours", &BEHAVIOURS, &mut self.choice.behaviours),
-            ("world", &WORLDS, &mut self.choice.world),
+        let before = self.settings.clone();
+        let s = &mut self.settings;
+        let rows: [(&str, &[&str], &mut String); 3] = [
+            ("body", &BODIES, &mut s.body),
+            ("behaviours", &BEHAVIOURS, &mut s.behaviours),
+            ("world", &WORLDS, &mut s.world),
         ];
         for (label, options, slot) in rows {
             ui.horizontal_wrapped(|ui| {
                 ui.label(RichText::new(format!("{label}:")).strong());
-                for (i, o) in options.iter().enumerate() {
-                    ui.selectable_value(slot, i, *o);
+                for o in options {
+                    ui.selectable_value(slot, (*o).to_owned(), *o);
                 }
             });
         }
-        if self.choice != before {
+        if self.settings != before {
+            let now = &self.settings;
             self.changed = [
-                self.choice.body != before.body,
-                self.choice.behaviours != before.behaviours,
-                self.choice.world != before.world,
+                now.body != before.body,
+                now.behaviours != before.behaviours,
+                now.world != before.world,
             ]
             .iter()
             .position(|c| *c);
@@ -137,12 +159,17 @@ impl ThreeSlots {
         }
     }
 
-    fn draw_run(&self, ui: &mut egui::Ui, width: f32) {
-        let (b, s, w) = self.choice.names();
-        let Ok(setup) = setup(b, s, w) else { return };
-        let world = &setup.world;
+    /// The chosen combination's run; where it was drawn.
+    fn draw_run(&self, ui: &mut egui::Ui, width: f32) -> egui::Rect {
         let height = (width * 0.55).min(260.0);
         let (rect, _) = ui.allocate_exact_size(vec2(width, height), Sense::hover());
+        let Some((b, s, w)) = self.settings.names() else {
+            return rect;
+        };
+        let Ok(setup) = setup(b, s, w) else {
+            return rect;
+        };
+        let world = &setup.world;
         let bounds = world.bounds;
         let view = PlaneView::fit(
             rect.shrink(6.0),
@@ -171,6 +198,7 @@ impl ThreeSlots {
                 );
             }
         }
+        rect
     }
 
     /// The three analysis patterns; the one whose slot changed is lit.
@@ -204,6 +232,55 @@ impl ThreeSlots {
                     });
             }
         });
+    }
+
+    /// The matrix as a table: a row per combination run so far.
+    fn matrix_csv(&self) -> String {
+        use std::fmt::Write as _;
+        let mut out = String::from("body,behaviours,world,reached,time (s),collisions,why\n");
+        for o in &self.matrix {
+            let time = o.time.map(|t| t.to_string()).unwrap_or_default();
+            let _ = writeln!(
+                out,
+                "{},{},{},{},{time},{},{}",
+                o.body,
+                o.behaviours,
+                o.world,
+                if o.reached { "yes" } else { "no" },
+                o.collisions,
+                export::csv_field(&o.why)
+            );
+        }
+        out
+    }
+
+    fn exports(&self, ui: &mut egui::Ui, run: egui::Rect) {
+        let csv = || self.matrix_csv();
+        export::bar(
+            ui,
+            ui.scope_id().with("three-slots-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-three-slots.png",
+                    rect: run,
+                },
+                Export::Csv {
+                    file: "kinolab-every-combination.csv",
+                    make: &csv,
+                },
+            ],
+        );
+    }
+
+    fn task_ui(&mut self, ui: &mut egui::Ui) {
+        ui.separator();
+        ui.label(RichText::new("Task: the car fails in the maze. Change exactly one slot, keep the world, so that the robot reaches the goal; then check.").strong());
+        if ui.button("Check").clicked()
+            && let Some((b, s, w)) = self.settings.names()
+        {
+            self.feedback = Some(kinolab_design::exercise::fix_the_car(b, s, w));
+        }
+        feedback_ui(ui, self.feedback.as_ref());
     }
 
     fn matrix_ui(&self, ui: &mut egui::Ui) {
@@ -260,7 +337,7 @@ impl LabWidget for ThreeSlots {
             crate::widget::error_box(ui, "This combination cannot run", p);
         }
         let width = ui.available_width();
-        self.draw_run(ui, width);
+        let run = self.draw_run(ui, width);
         if let Some((o, _)) = &self.run {
             let text = if o.reached {
                 format!(
@@ -279,30 +356,101 @@ impl LabWidget for ThreeSlots {
         if self.fill_matrix() {
             crate::widget::animate(ui);
         }
-        if self.task {
-            ui.separator();
-            ui.label(RichText::new("Task: the car fails in the maze. Change exactly one slot, keep the world, so that the robot reaches the goal; then check.").strong());
-            if ui.button("Check").clicked() {
-                let (b, s, w) = self.choice.names();
-                self.feedback = Some(kinolab_design::exercise::fix_the_car(b, s, w));
-            }
-            feedback_ui(ui, self.feedback.as_ref());
+        self.exports(ui, run);
+        if self.settings.task == Some(Task::FixTheCar) {
+            self.task_ui(ui);
         }
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.choice, &self.initial)
+        link::write(
+            NAME,
+            &self.settings,
+            &self.initial,
+            &Moment::<()>::default(),
+        )
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(c) = link::decode::<Choice>(state)
-            && c.body < BODIES.len()
-            && c.behaviours < BEHAVIOURS.len()
-            && c.world < WORLDS.len()
-        {
-            self.choice = c;
-            self.rerun();
+        let settings = match link::read::<Settings, ()>(NAME, state) {
+            Ok((settings, _)) => settings,
+            Err(why) => {
+                let Some(old) = link::decode::<Legacy>(state) else {
+                    return Err(why);
+                };
+                let name = |list: &[&str], i: usize| list.get(i).map(|s| (*s).to_owned());
+                let (Some(body), Some(behaviours), Some(world)) = (
+                    name(&BODIES, old.body),
+                    name(&BEHAVIOURS, old.behaviours),
+                    name(&WORLDS, old.world),
+                ) else {
+                    return Err("it names a slot this lab does not have".into());
+                };
+                Settings {
+                    body,
+                    behaviours,
+                    world,
+                    ..self.initial.clone()
+                }
+            }
+        };
+        // The old format's slots pass through the schema's choices too.
+        link::check(NAME, &settings)?;
+        // A link is written only when something changed: one holding the
+        // lesson's own settings is not one of this widget's.
+        if settings == self.initial {
+            return Err("it holds nothing this widget would change".into());
         }
+        self.settings = settings;
+        self.changed = None;
+        self.rerun();
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::registry::spec;
+
+    fn widget(params: &[(&str, &str)]) -> ThreeSlots {
+        let p = kinolab_schema::validate(&spec(NAME, params)).unwrap_or_else(|e| panic!("{e}"));
+        let settings: Settings = p.settings().unwrap_or_else(|e| panic!("{e}"));
+        ThreeSlots::new(settings)
+    }
+
+    #[test]
+    fn a_link_of_the_first_format_still_opens() {
+        let old = link::encode(&(2_usize, 1_usize, 3_usize)).unwrap_or_default();
+        let mut w = widget(&[]);
+        assert_eq!(w.restore(&old), Ok(()));
+        assert_eq!(
+            (
+                w.settings.body.as_str(),
+                w.settings.behaviours.as_str(),
+                w.settings.world.as_str()
+            ),
+            ("omni", "wander-when-stuck", "beach")
+        );
+        // A slot the lab does not have: refused, the lesson's settings kept.
+        let bad = link::encode(&(0_usize, 0_usize, 9_usize)).unwrap_or_default();
+        let mut w = widget(&[("world", "office")]);
+        assert!(w.restore(&bad).is_err());
+        assert_eq!(w.settings.world, "office");
+    }
+
+    #[test]
+    fn the_slots_travel_in_the_link_and_the_matrix_is_a_table() {
+        let mut w = widget(&[]);
+        w.settings.world = "maze".into();
+        let text = w.state().unwrap_or_default();
+        let mut again = widget(&[]);
+        assert_eq!(again.restore(&text), Ok(()));
+        assert_eq!(again.settings, w.settings);
+        while again.fill_matrix() {}
+        let csv = again.matrix_csv();
+        let rows = BODIES.len() * BEHAVIOURS.len() * WORLDS.len();
+        assert_eq!(csv.lines().count(), rows + 1);
+        assert!(csv.starts_with("body,behaviours,world,reached"), "{csv}");
     }
 }

@@ -51,7 +51,7 @@ pub struct Got {
     pub status: Option<Status>,
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Client {
     params: ClientParams,
     next: usize,

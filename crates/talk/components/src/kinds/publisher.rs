@@ -36,7 +36,7 @@ fn every() -> Vec<f64> {
     vec![0.1]
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Publisher {
     pattern: Pattern,
     period: f64,

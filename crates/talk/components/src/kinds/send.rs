@@ -20,7 +20,7 @@ fn half() -> f64 {
     0.5
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Sender {
     period: f64,
     sent: u64,
@@ -62,7 +62,7 @@ impl Component for Sender {
     }
 }
 
-#[derive(Debug, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Sink {
     got: u64,
 }

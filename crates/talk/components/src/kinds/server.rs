@@ -31,7 +31,7 @@ pub(crate) fn number() -> String {
     "Number".to_owned()
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Server {
     params: ServerParams,
     served: usize,

@@ -29,7 +29,7 @@ fn newest() -> String {
     "push-newest".to_owned()
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Subscriber {
     pattern: Pattern,
     work: f64,

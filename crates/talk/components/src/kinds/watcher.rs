@@ -28,7 +28,7 @@ fn once() -> Mode {
     Mode::Once
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Watcher {
     params: WatcherParams,
     pub fired: usize,

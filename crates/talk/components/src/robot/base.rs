@@ -13,7 +13,7 @@ use crate::runtime::Ctx;
 /// Without a fresh command for this long, the base stops (a watchdog), s.
 const WATCHDOG: f64 = 0.5;
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Base {
     period: f64,
     command: Command,

@@ -7,7 +7,7 @@ use crate::object::Object;
 use crate::pattern::{Pattern, ServiceSpec, Signature};
 use crate::runtime::Ctx;
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Laser {
     period: f64,
     scans: u64,

@@ -25,7 +25,7 @@ fn fifth() -> f64 {
     0.2
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Mapper {
     cell: f64,
     grid: Option<Grid>,

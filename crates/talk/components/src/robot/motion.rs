@@ -32,7 +32,7 @@ fn speed() -> f64 {
 /// Within this distance (m) a waypoint counts as passed.
 const REACH: f64 = 0.25;
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Motion {
     period: f64,
     speed: f64,
@@ -121,7 +121,7 @@ impl Component for Motion {
 }
 
 /// A joystick nobody touches: it publishes an empty path (stand still).
-#[derive(Debug, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Joystick;
 
 impl Component for Joystick {

@@ -13,7 +13,7 @@ use crate::pattern::{Pattern, PortSpec, ServiceSpec, Signature};
 use crate::runtime::Ctx;
 use crate::trace::Status;
 
-#[derive(Debug, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Planner {
     goal: Option<Vec2>,
     plans: u64,

@@ -33,7 +33,7 @@ fn quarter() -> f64 {
     0.25
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Sequencer {
     params: SequencerParams,
     goal: Option<[f64; 2]>,

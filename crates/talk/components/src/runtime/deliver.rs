@@ -64,7 +64,10 @@ impl Runtime {
                 return Err(Status::NotConnected);
             }
         };
-        let seq = self.next_seq();
+        // Jitter and loss are drawn by the message's own number, so a change
+        // scheduled for later (a script item) cannot alter what came before.
+        self.messages += 1;
+        let seq = self.messages;
         let direction = usize::from(!up);
         let arrival = wire
             .latency

@@ -74,7 +74,7 @@ pub struct PortStats {
     pub activations: u64,
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub(crate) struct PortSlot {
     pub spec: PortSpec,
     pub wire: Option<Wire>,
@@ -109,7 +109,7 @@ pub(crate) struct Activation {
     pub was_true: bool,
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub(crate) struct ServiceSlot {
     pub spec: ServiceSpec,
     pub current: Option<Object>,
@@ -122,7 +122,7 @@ pub(crate) struct ServiceSlot {
     pub pending: BTreeMap<u64, (Ref, u64)>,
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub(crate) struct Slot {
     pub name: String,
     pub component: Option<Box<dyn Component>>,
@@ -261,12 +261,16 @@ impl Ord for Due {
 }
 
 /// The runtime: components, their connections, the clock and the trace.
-#[derive(Debug)]
+/// A copy runs on exactly as the original.
+#[derive(Debug, Clone)]
 pub struct Runtime {
     now: f64,
     seed: u64,
     seq: u64,
     queue: BinaryHeap<Reverse<Due>>,
+    /// Messages put on connections so far (each draws its jitter and loss
+    /// by its number).
+    messages: u64,
     pub(crate) slots: Vec<Slot>,
     pub(crate) trace: Vec<Record>,
     /// Records left out past [`MAX_RECORDS`].
@@ -285,6 +289,7 @@ impl Runtime {
             seed,
             seq: 0,
             queue: BinaryHeap::new(),
+            messages: 0,
             slots: Vec::new(),
             trace: Vec::new(),
             dropped_records: 0,

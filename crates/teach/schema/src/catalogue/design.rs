@@ -20,10 +20,7 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
             ),
             param(
                 "seed",
-                Kind::Number {
-                    min: 0.0,
-                    max: 9999.0,
-                },
+                Kind::Integer { min: 0, max: 9999 },
                 Some("1"),
                 "the beach (the same seed, the same pebbles)",
             ),
@@ -93,14 +90,45 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
     WidgetSchema {
         name: "morphology-builder",
         summary: "the lab's mechanism model as the AnyMorphology pattern: elements, ports and pairs as a flat graph beside the hierarchy; dissolve a pair, see transforms through the ports, switch the plugged-in commands off",
-        params: &[param(
-            "mechanism",
-            Kind::Choice {
-                options: &["planar-3r", "rover-arm", "hexapod"],
-            },
-            Some("planar-3r"),
-            "the catalogue mechanism to read",
-        )],
+        params: &[
+            param(
+                "mechanism",
+                Kind::Choice {
+                    options: &["planar-3r", "rover-arm", "hexapod"],
+                },
+                Some("planar-3r"),
+                "the catalogue mechanism to read",
+            ),
+            param(
+                "from",
+                Kind::Integer { min: 0, max: 99 },
+                Some("0"),
+                "the element the transform starts from, by its number in the mechanism's list of bodies (0 = the base)",
+            ),
+            param(
+                "to",
+                Kind::Integer { min: 0, max: 99 },
+                None,
+                "the element the transform goes to, by its number in the list of bodies (the last when left out)",
+            ),
+            param(
+                "dissolved",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: 64,
+                    min: 0.0,
+                    max: 99.0,
+                },
+                None,
+                "pairs whose port is deleted, by their numbers in the mechanism's list of joints (none when left out)",
+            ),
+            param(
+                "commands",
+                Kind::YesNo,
+                Some("yes"),
+                "whether the plugged-in closed forms answer (`no`: the generic tree walk)",
+            ),
+        ],
         rules: None,
     },
 ];

@@ -6,9 +6,10 @@
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, pos2, vec2};
 use kinolab_components::view::ComponentView;
-use kinolab_components::{Action, Record};
+use kinolab_components::{Action, Record, Runtime};
 
-use super::ComponentLab;
+use super::Look;
+use super::run::LabRun;
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
 use crate::draw::{PlaneView, canvas, marks};
 use crate::theme;
@@ -89,7 +90,8 @@ fn along(a: Pos2, b: Pos2, t: f32) -> Pos2 {
 }
 
 /// Every anchor by name: (`component.service`, point) and ports likewise.
-struct Anchors {
+#[derive(Debug, Clone, Default)]
+pub struct Anchors {
     services: Vec<(String, Pos2)>,
     ports: Vec<(String, Pos2)>,
 }
@@ -119,32 +121,31 @@ impl Anchors {
             .map(|(n, _)| n.as_str())
     }
 
-    fn service(&self, name: &str) -> Option<Pos2> {
+    pub fn service(&self, name: &str) -> Option<Pos2> {
         self.services
             .iter()
             .find(|(n, _)| n == name)
             .map(|(_, p)| *p)
     }
 
-    fn port(&self, name: &str) -> Option<Pos2> {
+    pub fn port(&self, name: &str) -> Option<Pos2> {
         self.ports.iter().find(|(n, _)| n == name).map(|(_, p)| *p)
     }
 }
 
-/// Draw the diagram (and the world); returns a wiring the learner made.
-pub fn show(ui: &mut egui::Ui, lab: &mut ComponentLab) -> Option<Action> {
-    let (views, world) = {
-        let rt = lab.rt.as_ref()?;
-        (rt.view(), rt.world.is_some())
-    };
+/// Draw the diagram of `run` (and the world); a wiring the learner made,
+/// and where it was all drawn.
+pub fn show(ui: &mut egui::Ui, run: &LabRun, look: &mut Look) -> (Option<Action>, Rect) {
+    let rt = &run.rt;
+    let (views, world) = (rt.view(), rt.world.is_some());
     let width = ui.available_width();
     let side = world && width >= 640.0;
     let diagram_width = if side { width * 0.66 } else { width };
     legend(ui);
     // The layout of the system as it started, so rewiring moves wires,
     // not boxes.
-    let col = if lab.columns.len() == views.len() {
-        lab.columns.clone()
+    let col = if look.columns.len() == views.len() {
+        look.columns.clone()
     } else {
         columns(&views)
     };
@@ -154,37 +155,39 @@ pub fn show(ui: &mut egui::Ui, lab: &mut ComponentLab) -> Option<Action> {
         Rect::from_min_size(Pos2::ZERO, vec2(diagram_width, 10.0)),
     );
     let mut action = None;
-    ui.horizontal_top(|ui| {
-        let (response, painter) = canvas(
-            ui,
-            vec2(diagram_width, height.max(120.0)),
-            Sense::click_and_drag(),
-        );
-        let rect = response.rect;
-        let rects: Vec<Rect> = rects
-            .iter()
-            .map(|r| r.translate(rect.min.to_vec2()))
-            .collect();
-        let anchors = Anchors::new(&views, &rects);
-        draw_wires(&painter, lab, &views, &anchors);
-        draw_boxes(ui, &painter, lab, &views, &rects);
-        if let Some(rt) = lab.rt.as_ref() {
+    let mut shown = ui
+        .horizontal_top(|ui| {
+            let (response, painter) = canvas(
+                ui,
+                vec2(diagram_width, height.max(120.0)),
+                Sense::click_and_drag(),
+            );
+            let rect = response.rect;
+            let rects: Vec<Rect> = rects
+                .iter()
+                .map(|r| r.translate(rect.min.to_vec2()))
+                .collect();
+            let anchors = Anchors::new(&views, &rects);
+            draw_wires(&painter, rt, look.window, &views, &anchors);
+            draw_boxes(ui, &painter, look.selected.as_deref(), &views, &rects);
             let lost = theme::error_color(ui);
             draw_tokens(&painter, rt.trace(), rt.now(), &anchors, lost);
-        }
-        action = interact(ui, &painter, lab, &response, &anchors);
-        if side {
-            draw_robot_world(
-                ui,
-                lab,
-                vec2(width - diagram_width - 8.0, height.max(220.0)),
-            );
-        }
-    });
+            action = interact(ui, &painter, look, &response, &anchors);
+            look.anchors = anchors;
+            if side {
+                draw_robot_world(
+                    ui,
+                    run,
+                    vec2(width - diagram_width - 8.0, height.max(220.0)),
+                );
+            }
+        })
+        .response
+        .rect;
     if world && !side {
-        draw_robot_world(ui, lab, vec2(width, 220.0));
+        shown = shown.union(draw_robot_world(ui, run, vec2(width, 220.0)));
     }
-    action
+    (action, shown)
 }
 
 /// What each colour means.
@@ -203,7 +206,7 @@ fn legend(ui: &mut egui::Ui) {
 fn draw_boxes(
     ui: &egui::Ui,
     painter: &egui::Painter,
-    lab: &ComponentLab,
+    selected: Option<&str>,
     views: &[ComponentView],
     rects: &[Rect],
 ) {
@@ -261,7 +264,7 @@ fn draw_boxes(
             let a = port_anchor(*r, c.services.len(), j);
             let name = format!("{}.{}", c.name, p.name);
             let color = theme::pattern_color(p.pattern.name());
-            let selected = lab.selected.as_deref() == Some(name.as_str());
+            let selected = selected == Some(name.as_str());
             painter.circle(
                 a,
                 if selected { 6.0 } else { 4.5 },
@@ -287,13 +290,13 @@ fn draw_boxes(
 /// Wires, brighter where messages passed in the last tenth of the window.
 fn draw_wires(
     painter: &egui::Painter,
-    lab: &ComponentLab,
+    rt: &Runtime,
+    window: f64,
     views: &[ComponentView],
     anchors: &Anchors,
 ) {
-    let Some(rt) = lab.rt.as_ref() else { return };
     let now = rt.now();
-    let recent = (lab.window * 0.1).max(0.05);
+    let recent = (window * 0.1).max(0.05);
     let trace = rt.trace();
     let start = trace.partition_point(|r| r.sent < now - recent);
     for c in views {
@@ -359,24 +362,28 @@ fn draw_tokens(
 fn interact(
     ui: &egui::Ui,
     painter: &egui::Painter,
-    lab: &mut ComponentLab,
+    look: &mut Look,
     response: &egui::Response,
     anchors: &Anchors,
 ) -> Option<Action> {
+    // A drag starts once the pointer has moved a little: the port is
+    // where it was pressed, not where it is now.
     if response.drag_started()
-        && let Some(at) = response.interact_pointer_pos()
+        && let Some(at) = ui
+            .input(|i| i.pointer.press_origin())
+            .or(response.interact_pointer_pos())
         && let Some(port) = Anchors::near(&anchors.ports, at)
     {
-        lab.dragging = Some(port.to_owned());
-        lab.selected = Some(port.to_owned());
+        look.dragging = Some(port.to_owned());
+        look.selected = Some(port.to_owned());
     }
-    if let (Some(port), Some(at)) = (&lab.dragging, response.interact_pointer_pos())
+    if let (Some(port), Some(at)) = (&look.dragging, response.interact_pointer_pos())
         && let Some(from) = anchors.port(port)
     {
         painter.line_segment([from, at], Stroke::new(2.0, ui.visuals().text_color()));
     }
     if response.drag_stopped() {
-        let port = lab.dragging.take()?;
+        let port = look.dragging.take()?;
         let at = response.interact_pointer_pos()?;
         let service = Anchors::near(&anchors.services, at)?;
         return Some(Action::Connect {
@@ -387,27 +394,24 @@ fn interact(
     if response.clicked()
         && let Some(at) = response.interact_pointer_pos()
     {
-        lab.selected = Anchors::near(&anchors.ports, at).map(str::to_owned);
+        look.selected = Anchors::near(&anchors.ports, at).map(str::to_owned);
     }
     None
 }
 
-fn draw_robot_world(ui: &mut egui::Ui, lab: &ComponentLab, size: egui::Vec2) {
-    let Some(sim) = lab.rt.as_ref().and_then(|rt| rt.world.as_ref()) else {
-        return;
-    };
+/// The robot in its world, with its track; where it was drawn.
+fn draw_robot_world(ui: &mut egui::Ui, run: &LabRun, size: egui::Vec2) -> Rect {
     let (rect, _) = ui.allocate_exact_size(size, Sense::hover());
+    let Some(sim) = run.rt.world.as_ref() else {
+        return rect;
+    };
     let b = sim.world.bounds;
     let view = PlaneView::fit(rect.shrink(6.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
     let painter = ui.painter_at(rect);
     draw_world(ui, &painter, &view, &sim.world, sim.time);
     let color = theme::pattern_color("query");
-    draw_trail(
-        &painter,
-        &view,
-        lab.track.iter().map(|(_, p)| [p.x, p.y]),
-        color,
-    );
+    draw_trail(&painter, &view, run.track.iter().copied(), color);
     let ink = ui.visuals().text_color();
     draw_robot(&painter, &view, &sim.pose, sim.body.radius(), color, ink);
+    rect
 }

@@ -3,113 +3,104 @@
 //! them, with message tokens travelling along; the sequence diagram below
 //! shows every message of the last moments; a port can be dragged onto a
 //! service to wire it (a refusal says why) and cancelled; latency, jitter,
-//! loss, period and prescale are sliders. The run is deterministic: every
-//! change re-runs the system from the start with the learner's actions at
-//! the times they made them, so scrubbing back and forth shows one history.
+//! loss, period and prescale are sliders. The player plays the run a
+//! twentieth of a second per tick, steps and scrubs it; the learner's
+//! wiring and cancels are sprung on the run at the instant they are made
+//! (see [`run`]), so scrubbing back and forth shows one history, a link
+//! carries them, and "Save run" writes them as the system file's script.
 
 mod diagram;
+mod run;
 mod sequence;
 
+use egui::RichText;
 use kinolab_common::Feedback;
-use kinolab_components::system::{System, example};
-use kinolab_components::{Action, Runtime};
-use kinolab_world::Pose;
+use kinolab_common::display::tidy_report;
+use kinolab_components::system::{EXAMPLES, System, example};
+use kinolab_components::{Action, Latency, Runtime};
 use serde::{Deserialize, Serialize};
 
-use crate::link;
-use crate::widget::{LabWidget, Params, feedback_ui};
+use self::run::LabRun;
+use crate::export::{self, Export};
+use crate::link::{self, Moment};
+use crate::player::{Player, Speed};
+use crate::widget::{LabWidget, Params, SavedRun, control_row, feedback_ui, range};
 
-const SYSTEMS: [&str; 4] = ["out-of-order", "newest-vs-timed", "events", "robot"];
-/// Playback speeds (simulated seconds per real second).
-const SPEEDS: [f64; 5] = [0.05, 0.25, 1.0, 4.0, 16.0];
+/// The widget's name in the schema.
+const NAME: &str = "component-lab";
+/// The file "Save run" writes (`kinolab components` reads it).
+const FILE: &str = "lab.system.json";
+/// The most changes a link may carry.
+const MOST_CHANGES: usize = 200;
 
-/// What the learner changed, and what a link carries.
+/// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-struct Setup {
+struct Settings {
+    system: String,
+    task: Option<Task>,
+    /// Every connection's latency, jitter and loss (the system's own when `None`).
+    latency: Option<f64>,
+    jitter: Option<f64>,
+    loss: Option<f64>,
+    /// Push-timed period (s) and push-timed subscribers' prescale.
+    period: f64,
+    prescale: u32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+enum Task {
+    WireRobot,
+}
+
+/// The links of the first format: the set-up with the learner's changes.
+#[derive(Deserialize)]
+struct Legacy {
     system: String,
     fixed: f64,
     jitter: f64,
     loss: f64,
-    /// Push-timed period (s) and push-timed subscribers' prescale.
     period: f64,
     prescale: u32,
-    /// The learner's wiring and cancels, at the times they made them.
     actions: Vec<(f64, Action)>,
 }
 
-struct ComponentLab {
-    setup: Setup,
-    initial: Setup,
-    /// The wire-the-robot task.
-    task: bool,
-    rt: Option<Runtime>,
-    problem: Option<String>,
-    /// The robot's poses so far (time, pose), when the system has a world.
-    track: Vec<(f64, Pose)>,
-    until: f64,
-    playing: bool,
-    speed: usize,
-    /// Seconds of history the sequence diagram shows.
-    window: f64,
-    selected: Option<String>,
-    dragging: Option<String>,
-    /// Each box's column, from the wiring at the start.
-    columns: Vec<usize>,
-    refusal: Option<String>,
-    feedback: Option<Feedback>,
+impl Legacy {
+    fn read(self, task: Option<Task>) -> (Settings, Moment<Action>) {
+        let settings = Settings {
+            system: self.system,
+            task,
+            latency: Some(self.fixed),
+            jitter: Some(self.jitter),
+            loss: Some(self.loss),
+            period: self.period,
+            prescale: self.prescale,
+        };
+        let moment = Moment {
+            instant: 0.0,
+            events: self.actions,
+        };
+        (settings, moment)
+    }
 }
 
-pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
-    let task = p.choice("task") == Some("wire-robot");
-    let system = if task {
-        "robot"
-    } else {
-        p.choice("system").unwrap_or("robot")
-    };
-    let base = example(system).map_err(|e| e.to_string())?;
-    let setup = Setup {
-        system: system.to_owned(),
-        fixed: base.latency.fixed,
-        jitter: base.latency.jitter,
-        loss: base.latency.loss,
-        period: 0.1,
-        prescale: 3,
-        actions: Vec::new(),
-    };
-    let small = system != "robot";
-    let mut lab = ComponentLab {
-        initial: setup.clone(),
-        setup,
-        task,
-        rt: None,
-        problem: None,
-        track: Vec::new(),
-        until: base.until,
-        playing: false,
-        speed: if small { 1 } else { 2 },
-        window: if small { 1.0 } else { 2.0 },
-        selected: None,
-        dragging: None,
-        columns: Vec::new(),
-        refusal: None,
-        feedback: None,
-    };
-    lab.rebuild(0.0);
-    Ok(Box::new(lab))
-}
-
-impl Setup {
-    /// The system file this set-up describes.
-    fn system(&self, task: bool) -> Result<System, String> {
-        let mut s = if task {
-            kinolab_components::exercise::wire_task_system()
-        } else {
-            example(&self.system)
+impl Settings {
+    /// The system as shipped, before the settings change it.
+    fn base(&self) -> Result<System, String> {
+        match self.task {
+            Some(Task::WireRobot) => kinolab_components::exercise::wire_task_system(),
+            None => example(&self.system),
         }
-        .map_err(|e| e.to_string())?;
-        s.latency.fixed = self.fixed;
-        s.latency.jitter = self.jitter;
-        s.latency.loss = self.loss;
+        .map_err(|e| e.to_string())
+    }
+
+    /// The system file these settings describe.
+    fn system(&self) -> Result<System, String> {
+        let mut s = self.base()?;
+        let l = &mut s.latency;
+        l.fixed = self.latency.unwrap_or(l.fixed);
+        l.jitter = self.jitter.unwrap_or(l.jitter);
+        l.loss = self.loss.unwrap_or(l.loss);
         for c in &mut s.components {
             let timed = c.params.get("pattern").and_then(|p| p.as_str()) == Some("push-timed");
             let has_period = c.kind == "base" || (c.kind == "publisher" && timed);
@@ -125,260 +116,254 @@ impl Setup {
         }
         Ok(s)
     }
+
+    /// The robot system is watched at 1×, the small ones at ¼×.
+    fn small(&self) -> bool {
+        self.task.is_none() && self.system != "robot"
+    }
+}
+
+/// How the lab is looked at: not part of the run, not in a link.
+#[derive(Debug, Default)]
+struct Look {
+    /// Seconds of history the sequence diagram shows.
+    window: f64,
+    selected: Option<String>,
+    dragging: Option<String>,
+    /// Each box's column, from the wiring at the start.
+    columns: Vec<usize>,
+    /// Where each port and service was drawn last.
+    anchors: diagram::Anchors,
+}
+
+struct ComponentLab {
+    settings: Settings,
+    initial: Settings,
+    player: Option<Player<LabRun>>,
+    problem: Option<String>,
+    /// The system's own latency, which the sliders show until moved.
+    own: Latency,
+    look: Look,
+    refusal: Option<String>,
+    feedback: Option<Feedback>,
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    let settings: Settings = p.settings()?;
+    let mut lab = ComponentLab::new(settings);
+    lab.rebuild(&Moment::default());
+    Ok(Box::new(lab))
 }
 
 impl ComponentLab {
-    /// Build the system afresh and run it to `t` with the learner's actions.
-    fn rebuild(&mut self, t: f64) {
-        self.track.clear();
-        self.rt = match self.setup.system(self.task).and_then(|s| {
-            self.until = s.until;
-            s.build().map_err(|e| e.to_string())
-        }) {
-            Ok(mut rt) => {
-                self.columns = diagram::columns(&rt.view());
-                for (at, action) in &self.setup.actions {
-                    rt.schedule(*at, action.clone());
-                }
+    fn new(settings: Settings) -> Self {
+        let window = if settings.small() { 1.0 } else { 2.0 };
+        Self {
+            initial: settings.clone(),
+            settings,
+            player: None,
+            problem: None,
+            own: Latency::default(),
+            look: Look {
+                window,
+                ..Look::default()
+            },
+            refusal: None,
+            feedback: None,
+        }
+    }
+
+    /// What a link carries of the run.
+    fn moment(&self) -> Moment<Action> {
+        self.player.as_ref().map(Player::moment).unwrap_or_default()
+    }
+
+    /// The run the settings make, with `moment`'s changes sprung at their
+    /// times and landed at its instant (playing on if it was playing).
+    fn rebuild(&mut self, moment: &Moment<Action>) {
+        let (playing, speed) = match &self.player {
+            Some(p) => (p.playing, p.speed),
+            None if self.settings.small() => (false, Speed::Quarter),
+            None => (false, Speed::One),
+        };
+        let start = self.settings.base().and_then(|base| {
+            self.own = base.latency;
+            LabRun::start(self.settings.system()?)
+        });
+        match start {
+            Ok(run) => {
+                self.look.columns = diagram::columns(&run.rt.view());
+                let mut player = Player::new(run);
+                player.speed = speed;
+                player.replay(&moment.events, moment.instant);
+                player.playing = playing;
+                self.player = Some(player);
                 self.problem = None;
-                Some(rt)
             }
             Err(e) => {
+                self.player = None;
                 self.problem = Some(e);
-                None
-            }
-        };
-        self.advance_to(t);
-    }
-
-    /// Run forward to `t`, keeping the robot's track.
-    fn advance_to(&mut self, t: f64) {
-        let Some(rt) = self.rt.as_mut() else { return };
-        let t = t.min(self.until);
-        while rt.now() < t {
-            let next = (rt.now() + 0.05).min(t);
-            rt.run_until(next);
-            if let Some(sim) = &rt.world {
-                self.track.push((rt.now(), sim.pose));
             }
         }
+        self.feedback = None;
     }
 
-    fn now(&self) -> f64 {
-        self.rt.as_ref().map_or(0.0, Runtime::now)
-    }
-
-    /// Go to time `t`: forward by running on, backward by re-running.
-    fn seek(&mut self, t: f64) {
-        if t + 1e-9 < self.now() {
-            self.rebuild(t);
-        } else {
-            self.advance_to(t);
-        }
-    }
-
-    /// The learner acts now (as the deployer): wire, cut, cancel.
+    /// The learner acts now (as the deployer): wire, cut, cancel. A wiring
+    /// the runtime would refuse is not made, and the refusal says why.
     fn act(&mut self, action: Action) {
-        let t = self.now();
         self.refusal = None;
-        if let (Action::Connect { port, service }, Some(rt)) = (&action, self.rt.as_mut())
-            && let Err(e) = rt.connect(port, service, "you", None)
-        {
-            self.refusal = Some(format!("Refused: {e}"));
+        let Some(player) = self.player.as_mut() else {
             return;
+        };
+        if let Action::Connect { port, service } = &action {
+            let mut probe = player.state().rt.clone();
+            if let Err(e) = probe.connect(port, service, "deployer", None) {
+                self.refusal = Some(format!("Refused: {e}"));
+                return;
+            }
         }
-        if !matches!(action, Action::Connect { .. })
-            && let Some(rt) = self.rt.as_mut()
-        {
-            rt.act(&action, "you");
-        }
-        self.setup.actions.push((t, action));
+        player.spring(action);
         self.feedback = None;
     }
 
     fn controls(&mut self, ui: &mut egui::Ui) {
-        let before = self.setup.clone();
+        let before = self.settings.clone();
         ui.horizontal_wrapped(|ui| {
-            if !self.task {
+            if self.settings.task.is_none() {
                 egui::ComboBox::from_label("system")
-                    .selected_text(&self.setup.system)
+                    .selected_text(&self.settings.system)
                     .show_ui(ui, |ui| {
-                        for s in SYSTEMS {
-                            ui.selectable_value(&mut self.setup.system, s.to_owned(), s);
+                        for (id, _) in EXAMPLES {
+                            ui.selectable_value(&mut self.settings.system, id.to_owned(), id);
                         }
                     });
             }
-            let label = if self.playing { "Pause" } else { "Play" };
-            if ui.button(label).clicked() {
-                self.playing = !self.playing;
-            }
-            if ui
-                .button("Step")
-                .on_hover_text("run to the next thing that happens")
-                .clicked()
+            let changed = self.player.as_ref().is_some_and(|p| !p.events().is_empty());
+            if changed
+                && ui
+                    .button("Clear my changes")
+                    .on_hover_text("run again from 0 s without your wiring and cancels")
+                    .clicked()
             {
-                self.playing = false;
-                if let Some(next) = self.rt.as_ref().and_then(Runtime::next_due) {
-                    self.seek(next);
-                }
-            }
-            if ui
-                .button("Restart")
-                .on_hover_text(
-                    "run again from 0 s, with your wiring and cancels at the times you made them",
-                )
-                .clicked()
-            {
-                self.rebuild(0.0);
-            }
-            if !self.setup.actions.is_empty() && ui.button("Clear my changes").clicked() {
-                self.setup.actions.clear();
                 self.refusal = None;
-                self.feedback = None;
-                self.rebuild(0.0);
+                self.rebuild(&Moment::default());
             }
-            egui::ComboBox::from_label("speed")
-                .selected_text(format!("{}×", SPEEDS[self.speed]))
-                .show_ui(ui, |ui| {
-                    for (i, s) in SPEEDS.iter().enumerate() {
-                        ui.selectable_value(&mut self.speed, i, format!("{s}×"));
-                    }
-                });
         });
-        let mut t = self.now();
-        let scrub = ui.add(egui::Slider::new(&mut t, 0.0..=self.until).text("time (s)"));
-        if scrub.changed() {
-            self.playing = false;
-            self.seek(t);
+        self.sliders(ui);
+        if self.settings == before {
+            return;
         }
-        crate::widget::control_row(ui, |ui| {
-            ui.add(
-                egui::Slider::new(&mut self.setup.fixed, 0.0..=0.5)
-                    .text("latency (s)")
-                    .max_decimals(3),
-            );
-            ui.add(
-                egui::Slider::new(&mut self.setup.jitter, 0.0..=0.5)
-                    .text("jitter (s)")
-                    .max_decimals(3),
-            );
-            ui.add(egui::Slider::new(&mut self.setup.loss, 0.0..=0.5).text("loss"));
+        if self.settings.system == before.system {
+            let moment = self.moment();
+            self.rebuild(&moment);
+        } else {
+            // Another system: its own latency, and none of the changes.
+            self.settings.latency = None;
+            self.settings.jitter = None;
+            self.settings.loss = None;
+            self.look.selected = None;
+            self.refusal = None;
+            self.rebuild(&Moment::default());
+        }
+    }
+
+    fn sliders(&mut self, ui: &mut egui::Ui) {
+        let own = self.own;
+        let s = &mut self.settings;
+        control_row(ui, |ui| {
+            own_or(ui, &mut s.latency, own.fixed, "latency", "latency (s)");
+            own_or(ui, &mut s.jitter, own.jitter, "jitter", "jitter (s)");
+            own_or(ui, &mut s.loss, own.loss, "loss", "loss");
         });
-        crate::widget::control_row(ui, |ui| {
-            if matches!(self.setup.system.as_str(), "newest-vs-timed" | "robot") {
+        control_row(ui, |ui| {
+            if s.task.is_some() || matches!(s.system.as_str(), "newest-vs-timed" | "robot") {
                 ui.add(
-                    egui::Slider::new(&mut self.setup.period, 0.02..=1.0)
+                    egui::Slider::new(&mut s.period, range(NAME, "period"))
                         .text("push-timed period (s)"),
                 );
             }
-            if self.setup.system == "newest-vs-timed" {
-                ui.add(egui::Slider::new(&mut self.setup.prescale, 1..=10).text("prescale"));
+            if s.task.is_none() && s.system == "newest-vs-timed" {
+                let r = range(NAME, "prescale");
+                let (lo, hi) = (*r.start() as u32, *r.end() as u32);
+                ui.add(egui::Slider::new(&mut s.prescale, lo..=hi).text("prescale"));
             }
             ui.add(
-                egui::Slider::new(&mut self.window, 0.1..=10.0)
+                egui::Slider::new(&mut self.look.window, 0.1..=10.0)
                     .logarithmic(true)
                     .text("diagram window (s)"),
             );
         });
-        if self.setup != before {
-            if self.setup.system != before.system {
-                self.setup.actions.clear();
-                self.selected = None;
-                if let Ok(s) = example(&self.setup.system) {
-                    self.setup.fixed = s.latency.fixed;
-                    self.setup.jitter = s.latency.jitter;
-                    self.setup.loss = s.latency.loss;
-                }
-                self.rebuild(0.0);
-            } else {
-                let t = self.now();
-                self.rebuild(t);
-            }
-            self.feedback = None;
-        }
     }
 
-    /// The selected port: where it is wired, what it saw, why it is quiet,
-    /// and the buttons that act on it.
-    fn port_panel(&mut self, ui: &mut egui::Ui) {
-        let Some(name) = self.selected.clone() else {
-            ui.label("Click a port (a circle on a box's left edge) to see it; drag it onto a service (a square on a box's right edge) to wire it.");
-            return;
-        };
-        let Some(rt) = self.rt.as_ref() else { return };
-        let (component, port) = name.split_once('.').unwrap_or_default();
-        let Some(view) = rt
-            .component(component)
-            .and_then(|c| c.ports.into_iter().find(|p| p.name == port))
-        else {
-            return;
-        };
-        let why = rt.why_nothing(&name);
-        ui.horizontal_wrapped(|ui| {
-            ui.strong(&name);
-            ui.label(format!(
-                "{} {}{}",
-                view.pattern,
-                view.signature,
-                if view.wireable { ", wireable" } else { "" }
-            ));
-            match &view.connected_to {
-                Some(s) => ui.label(format!("→ {s}")),
-                None => ui.label("not connected"),
-            };
-        });
-        let s = view.stats;
-        ui.label(format!(
-            "sent {}, received {}, lost {}, skipped {}, held back by prescale {}, cancelled {}",
-            s.sent, s.received, s.lost, s.skipped, s.withheld, s.cancelled
-        ));
-        if why.reason != "received" {
-            ui.label(
-                egui::RichText::new(format!("Why nothing? {}", why.message))
-                    .color(crate::theme::error_color(ui)),
-            );
-        }
-        ui.horizontal_wrapped(|ui| {
-            if view.blocking {
-                if ui
-                    .button("Cancel")
-                    .on_hover_text(
-                        "switch the port to non-blocking: waiting calls return \"cancelled\"",
-                    )
-                    .clicked()
-                {
-                    self.act(Action::Cancel { port: name.clone() });
+    /// The player, the diagram at the instant shown, its timeline, the
+    /// port panel, the statuses and the sequence diagram; the area to
+    /// save as a picture.
+    fn run_ui(&mut self, ui: &mut egui::Ui) -> Option<egui::Rect> {
+        let player = self.player.as_mut()?;
+        player.controls(ui);
+        let (wired, diagram) = diagram::show(ui, player.state(), &mut self.look);
+        let marks: Vec<usize> = player
+            .events()
+            .into_iter()
+            .map(|(t, _)| run::tick_of(t))
+            .collect();
+        let expected = run::tick_of(player.state().system.until);
+        let ink = ui.visuals().text_color();
+        player.timeline(
+            ui,
+            "Simulated time",
+            expected,
+            &mut |painter, rect, x, _| {
+                for k in &marks {
+                    let at = x(*k);
+                    painter.line_segment(
+                        [egui::pos2(at, rect.top()), egui::pos2(at, rect.bottom())],
+                        egui::Stroke::new(2.0, ink.gamma_multiply(0.6)),
+                    );
                 }
-            } else if ui.button("Block again").clicked() {
-                self.act(Action::Block { port: name.clone() });
-            }
-            if view.connected_to.is_some() && ui.button("Disconnect").clicked() {
-                self.act(Action::Disconnect { port: name.clone() });
-            }
-        });
+            },
+        );
+        player.run(ui, 40);
+        if let Some(r) = &self.refusal {
+            ui.label(RichText::new(r).color(crate::theme::error_color(ui)));
+        }
+        let rt = &player.state().rt;
+        let acted = port_panel(ui, rt, self.look.selected.as_deref());
+        statuses(ui, rt);
+        let sequence = sequence::show(ui, rt, self.look.window);
+        if let Some(action) = wired.or(acted) {
+            self.act(action);
+        }
+        Some(diagram.union(sequence))
     }
 
-    /// Each component's state and what it says of itself.
-    fn statuses(&self, ui: &mut egui::Ui) {
-        let Some(rt) = self.rt.as_ref() else { return };
-        // A line each, wrapping: a status can be long and the column narrow.
-        for c in rt.view() {
-            ui.horizontal_wrapped(|ui| {
-                ui.label(
-                    egui::RichText::new(&c.name)
-                        .strong()
-                        .size(crate::theme::LABEL_SIZE),
-                );
-                let state = match &c.waiting_on {
-                    Some(p) => format!("blocked on {p}"),
-                    None => c.state.name().to_owned(),
-                };
-                ui.label(
-                    egui::RichText::new(format!("{state}: {}", c.status))
-                        .size(crate::theme::LABEL_SIZE),
-                );
-            });
-        }
+    fn exports(&mut self, ui: &mut egui::Ui, shown: egui::Rect) {
+        let Some(player) = self.player.as_mut() else {
+            return;
+        };
+        let command = format!("kinolab components {FILE} --until {}", player.time());
+        let run = player.state();
+        let csv = || trace_csv(run.rt.trace());
+        let file = || run.file();
+        export::bar(
+            ui,
+            ui.scope_id().with("component-lab-exports"),
+            &[
+                Export::Png {
+                    file: "kinolab-components.png",
+                    rect: shown,
+                },
+                Export::Csv {
+                    file: "kinolab-components-trace.csv",
+                    make: &csv,
+                },
+                Export::Run {
+                    file: FILE,
+                    command: &command,
+                    make: &file,
+                },
+            ],
+        );
     }
 
     fn task_ui(&mut self, ui: &mut egui::Ui) {
@@ -386,17 +371,137 @@ impl ComponentLab {
         ui.label(egui::RichText::new("Task: wire it so the map reaches the planner and the planner drives the base, then check (the core runs it for 40 s).").strong());
         if ui.button("Check").clicked() {
             let pairs: Vec<(String, String)> = self
-                .setup
-                .actions
-                .iter()
+                .player
+                .as_ref()
+                .map(Player::events)
+                .unwrap_or_default()
+                .into_iter()
                 .filter_map(|(_, a)| match a {
-                    Action::Connect { port, service } => Some((port.clone(), service.clone())),
+                    Action::Connect { port, service } => Some((port, service)),
                     _ => None,
                 })
                 .collect();
             self.feedback = Some(kinolab_components::exercise::wire_robot(&pairs));
         }
         feedback_ui(ui, self.feedback.as_ref());
+    }
+}
+
+/// A slider for a setting that is the system's own (`own`) until moved.
+fn own_or(ui: &mut egui::Ui, value: &mut Option<f64>, own: f64, param: &str, text: &str) {
+    let mut v = value.unwrap_or(own);
+    let slider = egui::Slider::new(&mut v, range(NAME, param))
+        .text(text)
+        .max_decimals(3);
+    if ui.add(slider).changed() {
+        *value = Some(v);
+    }
+}
+
+/// The trace as a table: a row per message, wiring, state change and note.
+fn trace_csv(trace: &[kinolab_components::Record]) -> String {
+    use std::fmt::Write as _;
+    let mut out = String::from(
+        "seq,sent (s),delivered (s),from,to,pattern,kind,port,service,status,summary\n",
+    );
+    for r in trace {
+        let delivered = r.delivered.map(|d| d.to_string()).unwrap_or_default();
+        let _ = writeln!(
+            out,
+            "{},{},{delivered},{},{},{},{},{},{},{},{}",
+            r.seq,
+            r.sent,
+            export::csv_field(&r.from),
+            export::csv_field(&r.to),
+            r.pattern,
+            r.kind,
+            export::csv_field(&r.port),
+            export::csv_field(&r.service),
+            r.status.name(),
+            export::csv_field(&r.summary),
+        );
+    }
+    out
+}
+
+/// The selected port: where it is wired, what it saw, why it is quiet,
+/// and the buttons that act on it.
+fn port_panel(ui: &mut egui::Ui, rt: &Runtime, selected: Option<&str>) -> Option<Action> {
+    let Some(name) = selected else {
+        ui.label("Click a port (a circle on a box's left edge) to see it; drag it onto a service (a square on a box's right edge) to wire it.");
+        return None;
+    };
+    let (component, port) = name.split_once('.')?;
+    let view = rt
+        .component(component)
+        .and_then(|c| c.ports.into_iter().find(|p| p.name == port))?;
+    let why = rt.why_nothing(name);
+    ui.horizontal_wrapped(|ui| {
+        ui.strong(name);
+        ui.label(format!(
+            "{} {}{}",
+            view.pattern,
+            view.signature,
+            if view.wireable { ", wireable" } else { "" }
+        ));
+        match &view.connected_to {
+            Some(s) => ui.label(format!("→ {s}")),
+            None => ui.label("not connected"),
+        };
+    });
+    let s = view.stats;
+    ui.label(format!(
+        "sent {}, received {}, lost {}, skipped {}, held back by prescale {}, cancelled {}",
+        s.sent, s.received, s.lost, s.skipped, s.withheld, s.cancelled
+    ));
+    if why.reason != "received" {
+        ui.label(
+            RichText::new(format!("Why nothing? {}", why.message))
+                .color(crate::theme::error_color(ui)),
+        );
+    }
+    let port = name.to_owned();
+    ui.horizontal_wrapped(|ui| {
+        let mut action = None;
+        if view.blocking {
+            if ui
+                .button("Cancel")
+                .on_hover_text(
+                    "switch the port to non-blocking: waiting calls return \"cancelled\"",
+                )
+                .clicked()
+            {
+                action = Some(Action::Cancel { port: port.clone() });
+            }
+        } else if ui.button("Block again").clicked() {
+            action = Some(Action::Block { port: port.clone() });
+        }
+        if view.connected_to.is_some() && ui.button("Disconnect").clicked() {
+            action = Some(Action::Disconnect { port });
+        }
+        action
+    })
+    .inner
+}
+
+/// Each component's state and what it says of itself.
+fn statuses(ui: &mut egui::Ui, rt: &Runtime) {
+    // A line each, wrapping: a status can be long and the column narrow.
+    for c in rt.view() {
+        ui.horizontal_wrapped(|ui| {
+            ui.label(
+                RichText::new(&c.name)
+                    .strong()
+                    .size(crate::theme::LABEL_SIZE),
+            );
+            let state = match &c.waiting_on {
+                Some(p) => format!("blocked on {p}"),
+                None => c.state.name().to_owned(),
+            };
+            ui.label(
+                RichText::new(format!("{state}: {}", c.status)).size(crate::theme::LABEL_SIZE),
+            );
+        });
     }
 }
 
@@ -407,46 +512,69 @@ impl LabWidget for ComponentLab {
             crate::widget::error_box(ui, "This system cannot run", p);
             return;
         }
-        if let Some(action) = diagram::show(ui, self) {
-            self.act(action);
+        if let Some(shown) = self.run_ui(ui) {
+            self.exports(ui, shown);
         }
-        if let Some(r) = &self.refusal {
-            ui.label(egui::RichText::new(r).color(crate::theme::error_color(ui)));
-        }
-        self.port_panel(ui);
-        self.statuses(ui);
-        sequence::show(ui, self);
-        if self.task {
+        if self.settings.task.is_some() {
             self.task_ui(ui);
-        }
-        if self.playing {
-            let dt = crate::widget::frame_dt(ui);
-            let t = self.now() + dt * SPEEDS[self.speed];
-            self.advance_to(t);
-            if self.now() >= self.until {
-                self.playing = false;
-            }
-            crate::widget::animate(ui);
         }
     }
 
     fn state(&self) -> Option<String> {
-        link::changed(&self.setup, &self.initial)
+        link::write(NAME, &self.settings, &self.initial, &self.moment())
     }
 
     fn restore(&mut self, state: &str) -> Result<(), String> {
-        if let Some(s) = link::decode::<Setup>(state)
-            && SYSTEMS.contains(&s.system.as_str())
-            && (0.0..=0.5).contains(&s.fixed)
-            && (0.0..=0.5).contains(&s.jitter)
-            && (0.0..=0.5).contains(&s.loss)
-            && (0.02..=1.0).contains(&s.period)
-            && (1..=10).contains(&s.prescale)
-            && s.actions.len() <= 200
-        {
-            self.setup = s;
-            self.rebuild(0.0);
+        let (settings, moment) = match link::read::<Settings, Action>(NAME, state) {
+            Ok(read) => read,
+            Err(why) => match link::decode::<Legacy>(state) {
+                Some(old) => old.read(self.initial.task),
+                None => return Err(why),
+            },
+        };
+        // The old format's values pass through the schema's ranges too.
+        link::check(NAME, &settings)?;
+        if moment.events.len() > MOST_CHANGES {
+            return Err(format!("it holds more than {MOST_CHANGES} changes"));
         }
+        // A link is written only when something changed: one holding the
+        // lesson's own settings and nothing else is not one of this widget's.
+        if settings == self.initial && moment == Moment::default() {
+            return Err("it holds nothing this widget would change".into());
+        }
+        self.settings = settings;
+        self.look.selected = None;
+        self.refusal = None;
+        self.rebuild(&moment);
         Ok(())
     }
+
+    fn seek(&mut self, t: f64) {
+        if let Some(player) = &mut self.player {
+            player.seek_time(t);
+        }
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        let player = self.player.as_mut()?;
+        let until = player.time().to_string();
+        let run = player.state();
+        let mut shows = vec![
+            ("/trace".to_owned(), tidy_report(&run.rt.trace()).ok()?),
+            ("/components".to_owned(), tidy_report(&run.rt.view()).ok()?),
+        ];
+        if let Some(sim) = &run.rt.world {
+            let pose = [sim.pose.x, sim.pose.y, sim.pose.theta];
+            shows.push(("/robot".to_owned(), tidy_report(&pose).ok()?));
+        }
+        Some(SavedRun {
+            file: FILE.into(),
+            text: run.file().ok()?,
+            args: vec!["components".into(), FILE.into(), "--until".into(), until],
+            shows,
+        })
+    }
 }
+
+#[cfg(test)]
+mod tests;

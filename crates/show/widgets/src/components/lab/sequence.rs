@@ -6,15 +6,16 @@
 use egui::{Align2, Color32, FontId, Pos2, Sense, Stroke, pos2, vec2};
 use kinolab_components::Status;
 
-use super::ComponentLab;
+use kinolab_components::Runtime;
+
 use crate::draw::{canvas, marks};
 use crate::theme;
 
 /// Most arrows labelled; beyond this only the arrows are drawn.
 const LABELLED: usize = 24;
 
-pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
-    let Some(rt) = lab.rt.as_ref() else { return };
+/// The diagram of `rt`'s last `window` seconds; where it was drawn.
+pub fn show(ui: &mut egui::Ui, rt: &Runtime, window: f64) -> egui::Rect {
     let names: Vec<String> = rt.view().into_iter().map(|c| c.name).collect();
     let width = ui.available_width();
     let (response, painter) = canvas(ui, vec2(width, 280.0), Sense::hover());
@@ -31,8 +32,8 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
     };
     let (top, bottom) = (rect.top() + 24.0, rect.bottom() - 8.0);
     let now = rt.now();
-    let from = now - lab.window;
-    let y_of = |t: f64| top + ((t - from) / lab.window).clamp(0.0, 1.0) as f32 * (bottom - top);
+    let from = now - window;
+    let y_of = |t: f64| top + ((t - from) / window).clamp(0.0, 1.0) as f32 * (bottom - top);
     for name in &names {
         let x = x_of(name);
         painter.line_segment([pos2(x, top), pos2(x, bottom)], Stroke::new(1.0, faint));
@@ -132,6 +133,7 @@ pub fn show(ui: &mut egui::Ui, lab: &ComponentLab) {
             );
         }
     }
+    rect
 }
 
 /// A message's arrow from `a` to `b`, faded when it went nowhere.
