@@ -56,7 +56,7 @@ pub enum Change {
     },
     /// The behaviour called `behaviour.name` becomes `behaviour` (its
     /// state starts afresh).
-    ReplaceBehaviour { at: f64, behaviour: Named },
+    ReplaceBehaviour { at: f64, behaviour: Box<Named> },
 }
 
 impl Change {
@@ -349,7 +349,7 @@ impl Runner {
                     .iter_mut()
                     .find(|b| b.name == behaviour.name)
                 {
-                    *b = behaviour.clone();
+                    *b = (**behaviour).clone();
                     b.reset();
                 }
             }

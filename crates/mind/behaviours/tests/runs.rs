@@ -219,7 +219,10 @@ fn a_script_replays_changes_made_by_hand() {
         if k == 90 {
             let change = Change::ReplaceBehaviour {
                 at: by_hand.sim.time,
-                behaviour: Named::new("love", Behaviour::Braitenberg(Character::Explorer.wiring())),
+                behaviour: Box::new(Named::new(
+                    "love",
+                    Behaviour::Braitenberg(Character::Explorer.wiring()),
+                )),
             };
             by_hand.apply(&change);
             script.push(change);

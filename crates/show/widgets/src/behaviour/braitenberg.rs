@@ -165,7 +165,7 @@ fn change(t: f64, event: &Event, i: usize) -> Option<Change> {
         }),
         Event::Rewire { vehicle: v, wiring } => (*v == i).then(|| Change::ReplaceBehaviour {
             at: t,
-            behaviour: Named::new(vehicle(i), Behaviour::Braitenberg(*wiring)),
+            behaviour: Box::new(Named::new(vehicle(i), Behaviour::Braitenberg(*wiring))),
         }),
     }
 }
