@@ -107,6 +107,14 @@ impl ScriptError {
         }
     }
 
+    /// The same error, placed at `position` (when it is known).
+    pub(crate) fn at(mut self, position: Position) -> Self {
+        if !position.is_none() {
+            (self.line, self.column) = at(position);
+        }
+        self
+    }
+
     pub(crate) fn too_long(len: usize, max: usize) -> Self {
         let message = format!("the code is {len} bytes long; the lab takes at most {max}");
         Self::new(ErrorKind::Syntax, message, Position::NONE, None)

@@ -92,6 +92,31 @@ pub(crate) fn engine(sink: &Sink) -> Engine {
     e
 }
 
+/// Where a learner's code was last: the line and column of every
+/// expression and statement as it runs.
+pub(crate) type Trail = Rc<std::cell::Cell<rhai::Position>>;
+
+/// [`engine`] that notes in `trail` where the code is at each step. It
+/// runs a failed call again to find where it failed, since Rhai reports
+/// the sandbox's stops (too many operations, too deep, too large) at the
+/// call, not at the line that caused them.
+#[allow(deprecated)] // Rhai marks its debugger interface as volatile, not deprecated
+pub(crate) fn locating(sink: &Sink, trail: &Trail) -> Engine {
+    let mut e = engine(sink);
+    let trail = trail.clone();
+    e.register_debugger(
+        |_, debugger| debugger,
+        move |_, event, _, _, position| {
+            let step = matches!(event, rhai::debugger::DebuggerEvent::Step);
+            if step && !position.is_none() {
+                trail.set(position);
+            }
+            Ok(rhai::debugger::DebuggerCommand::StepInto)
+        },
+    );
+    e
+}
+
 /// Trigonometry and the other transcendental functions from the lab's
 /// own maths library (the core's `trig`, `libm`): a script computes the
 /// same bits as the core, natively and in wasm, so a run replays the same

@@ -5,7 +5,7 @@ use std::rc::Rc;
 use rhai::{AST, CallFnOptions, Dynamic, Engine, Map, Scope};
 
 use crate::error::{ScriptError, When};
-use crate::sandbox::{Output, Sink, engine};
+use crate::sandbox::{Output, Sink, Trail, engine, locating};
 
 /// The function a hook calls, as the learner must write it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -35,7 +35,13 @@ pub struct Script {
     /// `this` inside the learner's function: a map that starts empty and
     /// keeps whatever the function puts in it, call after call.
     memory: Dynamic,
+    /// The last call's `this` and arguments, as they were before it ran:
+    /// to find, if its answer is refused, the line that gave it.
+    last: std::cell::RefCell<Option<Before>>,
 }
+
+/// `this` and the arguments of a call, before it.
+type Before = (Dynamic, Vec<Dynamic>);
 
 impl std::fmt::Debug for Script {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -83,6 +89,7 @@ impl Script {
             ast: Rc::new(ast),
             signature,
             memory: Dynamic::from_map(Map::new()),
+            last: Default::default(),
         })
     }
 
@@ -116,18 +123,58 @@ impl Script {
         at: When,
     ) -> Result<Call, ScriptError> {
         *self.sink.borrow_mut() = Output::default();
+        let before = (memory.clone(), args.clone());
         let options = CallFnOptions::new().eval_ast(false).bind_this_ptr(memory);
-        let value = self
-            .engine
-            .call_fn_with_options::<Dynamic>(
-                options,
-                &mut Scope::new(),
-                &self.ast,
-                self.signature.name,
-                args,
-            )
-            .map_err(|e| ScriptError::run(&e, at, self.signature));
+        let result = self.engine.call_fn_with_options::<Dynamic>(
+            options,
+            &mut Scope::new(),
+            &self.ast,
+            self.signature.name,
+            args,
+        );
         let output = std::mem::take(&mut *self.sink.borrow_mut());
-        value.map(|value| Call { value, output })
+        match result {
+            Ok(value) => {
+                *self.last.borrow_mut() = Some(before);
+                Ok(Call { value, output })
+            }
+            Err(e) => {
+                let error = ScriptError::run(&e, at, self.signature);
+                Err(match error.line {
+                    Some(_) => error,
+                    None => error.at(self.locate(before)),
+                })
+            }
+        }
+    }
+
+    /// `error`, found in the last call's answer (its shape, a NaN), placed
+    /// at the line that gave the answer.
+    pub fn place(&self, error: ScriptError) -> ScriptError {
+        let before = self.last.borrow().clone();
+        match (error.line, before) {
+            (None, Some(before)) => error.at(self.locate(before)),
+            _ => error,
+        }
+    }
+
+    /// Where the call with `memory` and `args` ends or fails: run again,
+    /// noting each step's place. Rhai reports the sandbox's stops (too
+    /// many operations, too deep, too large) at the call, not at the line.
+    fn locate(&self, (mut memory, args): Before) -> rhai::Position {
+        let trail = Trail::default();
+        let engine = locating(&Sink::default(), &trail);
+        let options = CallFnOptions::new()
+            .eval_ast(false)
+            .bind_this_ptr(&mut memory);
+        let name = self.signature.name;
+        let _ = engine.call_fn_with_options::<Dynamic>(
+            options,
+            &mut Scope::new(),
+            &self.ast,
+            name,
+            args,
+        );
+        trail.get()
     }
 }

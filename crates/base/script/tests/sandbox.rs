@@ -18,7 +18,7 @@ fn compile(source: &str) -> Script {
 fn call(script: &mut Script, t: f64) -> Result<[f64; 2], kinolab_script::ScriptError> {
     let args = vec![number(1.0), number(0.5), number(-0.25)];
     let out = script.call(args, t)?;
-    finite(&out.value, ["v", "omega"], CONTROL, t)
+    finite(&out.value, ["v", "omega"], CONTROL, t).map_err(|e| script.place(e))
 }
 
 #[test]
@@ -72,8 +72,40 @@ fn hostile_scripts_stop_with_a_message_in_words() {
         assert_eq!(e.kind, kind, "{source}: {e}");
         assert!(e.message.contains(words), "{source}: {}", e.message);
         assert_eq!(e.t, Some(3.2));
+        assert!(e.line.is_some() && e.column.is_some(), "{source}: {e:?}");
         // The host goes on: the same script can be called again.
         assert!(call(&mut s, 3.25).is_err());
+    }
+}
+
+#[test]
+fn the_sandbox_s_stops_name_the_line_that_caused_them() {
+    let cases = [
+        (
+            "fn control(rho, alpha, beta) {\n    let n = 0;\n    while rho > 0.0 {\n        n += 1;\n    }\n}",
+            [3, 4],
+        ),
+        (
+            "fn deeper(n) {\n    deeper(n + 1)\n}\nfn control(rho, alpha, beta) {\n    deeper(0)\n}",
+            [2, 2],
+        ),
+        (
+            "fn control(rho, alpha, beta) {\n    let a = [];\n    a.pad(100000000, 0);\n    [0.0, 0.0]\n}",
+            [3, 3],
+        ),
+        // A wrong answer: the line that gave it.
+        (
+            "fn control(rho, alpha, beta) {\n    if rho > 0.5 {\n        return #{ v: 1.0 };\n    }\n    [0.0, 0.0]\n}",
+            [3, 3],
+        ),
+    ];
+    for (source, lines) in cases {
+        let mut s = compile(source);
+        let e = call(&mut s, 1.0).unwrap_err();
+        let line = e.line.unwrap();
+        assert!(lines[0] <= line && line <= lines[1], "{source}: {e:?}");
+        // `this` is as it was: the search ran on a copy.
+        assert_eq!(s.memory().to_string(), "#{}");
     }
 }
 

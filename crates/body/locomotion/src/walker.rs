@@ -134,7 +134,7 @@ impl Walker {
         ]);
         let at = kinolab_script::When::Phase(tau);
         let call = script.call_pure(vec![leg, kinolab_script::value::number(tau)], at)?;
-        foot_answer(&call.value, at)
+        foot_answer(&call.value, at).map_err(|e| script.place(e))
     }
 
     /// Where leg `i`'s foot should be at `tau`, body frame.

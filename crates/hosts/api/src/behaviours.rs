@@ -18,7 +18,8 @@ pub struct RunBehaviours {
 
 impl Operation for RunBehaviours {
     type Report = RunReport;
-    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        run(&setup(&self.run)?).map_err(|e| Error::input("run", e))
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
+        let source = self.run.with_scripts("run", files)?;
+        run(&setup(&source)?).map_err(|e| Error::input("run", e))
     }
 }

@@ -20,8 +20,8 @@ pub struct Simulate {
 
 impl Operation for Simulate {
     type Report = report::SimulationReport;
-    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        let spec = run_file(&self.run)?;
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
+        let spec = run_file(&self.run.with_scripts("run", files)?)?;
         let trajectory = spec.run.simulate().map_err(|e| Error::input("run", e))?;
         Ok(report::simulation(&spec, &trajectory))
     }
@@ -40,8 +40,8 @@ pub struct Batch {
 
 impl Operation for Batch {
     type Report = report::BatchReport;
-    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        let spec = run_file(&self.run)?;
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
+        let spec = run_file(&self.run.with_scripts("run", files)?)?;
         report::circle_batch(&spec, self.radius, self.count, self.heading_deg, self.paths).map_err(
             |e| match e.field.as_str() {
                 "heading" => Error::argument("heading_deg", e.message),

@@ -47,8 +47,9 @@ pub struct FieldVectors {
 
 impl Operation for FieldVectors {
     type Report = report::Vectors;
-    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        report::vectors(&field(&self.field)?, &self.at).map_err(argument)
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
+        report::vectors(&field(&self.field.with_scripts("field", files)?)?, &self.at)
+            .map_err(argument)
     }
 }
 
@@ -62,8 +63,12 @@ pub struct FieldMinima {
 
 impl Operation for FieldMinima {
     type Report = report::Minima;
-    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        report::minima_in(&field(&self.field)?, self.area).map_err(argument)
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
+        report::minima_in(
+            &field(&self.field.with_scripts("field", files)?)?,
+            self.area,
+        )
+        .map_err(argument)
     }
 }
 
@@ -79,13 +84,18 @@ pub struct FieldDescend {
 
 impl Operation for FieldDescend {
     type Report = kinolab_fields::descend::Descent;
-    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
         let defaults = Steps::default();
         let steps = Steps {
             step: self.step.unwrap_or(defaults.step),
             max_steps: self.max_steps.unwrap_or(defaults.max_steps),
         };
-        report::descent(&field(&self.field)?, self.start, steps).map_err(argument)
+        report::descent(
+            &field(&self.field.with_scripts("field", files)?)?,
+            self.start,
+            steps,
+        )
+        .map_err(argument)
     }
 }
 

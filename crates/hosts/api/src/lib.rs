@@ -22,7 +22,9 @@
 //! - [`plans`]: grid plans, architectures in the arena, sensing routes;
 //! - [`components`]: systems of communicating components;
 //! - [`teach`]: lessons, widgets, the automation unit's pick cell and
-//!   Simon's ant.
+//!   Simon's ant;
+//! - [`script`]: graded code exercises, a learner's script checked and a
+//!   class's scripts graded.
 
 mod error;
 mod source;
@@ -34,6 +36,7 @@ pub mod fields;
 pub mod legs;
 pub mod mechanism;
 pub mod plans;
+pub mod script;
 pub mod teach;
 pub mod wheels;
 
@@ -114,6 +117,9 @@ pub const OPERATIONS: &[Names] = &[
     names("widgets", "widgets"),
     names("pick-cell", "pickCell"),
     names("ant", "antWalk"),
+    names("script exercises", "exercises"),
+    names("script check", "checkScript"),
+    names("script grade", "gradeScripts"),
 ];
 
 const fn names(command: &'static str, js: &'static str) -> Names {

@@ -107,3 +107,76 @@ pub(crate) fn unknown(what: &str, id: &str, known: &[&str]) -> FieldError {
         format!("no {what} called `{id}` (known: {})", known.join(", ")),
     )
 }
+
+/// The most script files one input may name.
+const MAX_SCRIPT_FILES: usize = 64;
+
+impl Source {
+    /// The input with every learner's script it names by file read in:
+    /// an object `{"kind": "script", "path": "law.rhai"}` anywhere in it
+    /// becomes `{"kind": "script", "source": "<the file's text>"}`, the
+    /// file found by `files` beside the input. Text that is not JSON is
+    /// left for the input's own reader to refuse.
+    pub(crate) fn with_scripts(
+        &self,
+        role: &'static str,
+        files: &mut dyn Files,
+    ) -> Result<Source, Error> {
+        let Source::Text(text) = self else {
+            return Ok(self.clone());
+        };
+        let Ok(mut value) = serde_json::from_str::<serde_json::Value>(text) else {
+            return Ok(self.clone());
+        };
+        let mut read = 0;
+        inline(&mut value, "", files, &mut read).map_err(|e| Error::input(role, e))?;
+        Ok(if read == 0 {
+            self.clone()
+        } else {
+            Source::Text(value.to_string())
+        })
+    }
+}
+
+fn inline(
+    value: &mut serde_json::Value,
+    at: &str,
+    files: &mut dyn Files,
+    read: &mut usize,
+) -> Result<(), FieldError> {
+    use serde_json::Value;
+    match value {
+        Value::Object(map) => {
+            let script = map.get("kind").and_then(Value::as_str) == Some("script");
+            if let (true, Some(Value::String(path))) = (script, map.get("path")) {
+                let field = format!("{at}.path").trim_start_matches('.').to_owned();
+                if map.contains_key("source") {
+                    return Err(FieldError::new(field, "give `source` or `path`, not both"));
+                }
+                *read += 1;
+                if *read > MAX_SCRIPT_FILES {
+                    return Err(FieldError::new(
+                        field,
+                        format!("more than {MAX_SCRIPT_FILES} script files"),
+                    ));
+                }
+                let (_, text) = files
+                    .read("", path)
+                    .map_err(|e| FieldError::new(field, e))?;
+                map.remove("path");
+                map.insert("source".into(), Value::String(text));
+                return Ok(());
+            }
+            for (key, v) in map.iter_mut() {
+                inline(v, &format!("{at}.{key}"), files, read)?;
+            }
+        }
+        Value::Array(items) => {
+            for (i, v) in items.iter_mut().enumerate() {
+                inline(v, &format!("{at}[{i}]"), files, read)?;
+            }
+        }
+        _ => {}
+    }
+    Ok(())
+}

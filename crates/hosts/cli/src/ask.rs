@@ -57,7 +57,7 @@ pub(crate) fn ask<O: Operation>(operation: &O, input: Option<&Path>) -> Result<V
 const POSITIONAL: [&str; 3] = ["legs", "gains", "feeds"];
 
 /// An API error as one line: the file's path or the option, then what is wrong.
-fn failure(e: Error, input: Option<&Path>) -> Failure {
+pub(crate) fn failure(e: Error, input: Option<&Path>) -> Failure {
     let shown = |role: &str| input.map_or_else(|| role.to_owned(), |p| p.display().to_string());
     Failure(match e.place {
         Place::Input(role) => format!("{}: {}", shown(role), e.message),

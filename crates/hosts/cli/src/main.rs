@@ -21,6 +21,7 @@ mod legs;
 mod mechanism;
 mod output;
 mod plans;
+mod script;
 mod teach;
 mod wheels;
 
@@ -55,12 +56,23 @@ enum Command {
     Components(components::Command),
     #[command(flatten)]
     Teach(teach::Command),
+    /// Graded code exercises: list them, check a learner's script, grade a class.
+    Script {
+        #[command(subcommand)]
+        command: script::Command,
+    },
+}
+
+/// What a command prints: one JSON document, or text (CSV).
+enum Printed {
+    Json(Value),
+    Text(String),
 }
 
 /// A failure reported as one line on stderr.
 struct Failure(String);
 
-fn run(command: Command) -> Result<Value, Failure> {
+fn run(command: Command) -> Result<Printed, Failure> {
     match command {
         Command::Legs(c) => legs::run(c),
         Command::Wheels(c) => wheels::run(c),
@@ -70,7 +82,9 @@ fn run(command: Command) -> Result<Value, Failure> {
         Command::Plans(c) => plans::run(c),
         Command::Components(c) => components::run(c),
         Command::Teach(c) => teach::run(c),
+        Command::Script { command } => return script::run(command),
     }
+    .map(Printed::Json)
 }
 
 /// Clap's complaint as one line: what is wrong and which option, without
@@ -104,7 +118,8 @@ fn main() -> ExitCode {
         }
     };
     match run(cli.command) {
-        Ok(value) => output::print(&value),
+        Ok(Printed::Json(value)) => output::print(&value),
+        Ok(Printed::Text(text)) => output::print_text(&text),
         Err(Failure(message)) => output::fail(&message),
     }
 }

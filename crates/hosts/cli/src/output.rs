@@ -20,7 +20,11 @@ const CANNOT_WRITE: u8 = 3;
 
 /// Print `value` as one line of JSON on stdout.
 pub(crate) fn print(value: &Value) -> ExitCode {
-    let text = value.to_string();
+    print_text(&format!("{value}\n"))
+}
+
+/// Print `text` (ending in a new line) on stdout.
+pub(crate) fn print_text(text: &str) -> ExitCode {
     if text.len() > MAX_OUTPUT_BYTES {
         return fail(&format!(
             "the answer would be {:.0} MB, above the output bound of {} MB; ask for less \
@@ -30,7 +34,7 @@ pub(crate) fn print(value: &Value) -> ExitCode {
         ));
     }
     let mut out = std::io::stdout().lock();
-    match writeln!(out, "{text}").and_then(|()| out.flush()) {
+    match write!(out, "{text}").and_then(|()| out.flush()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             say(&format!("cannot write the answer: {e}"));

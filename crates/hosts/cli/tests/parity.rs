@@ -29,7 +29,7 @@ struct Args {
     flags: Vec<String>,
 }
 
-const FLAGS: [&str; 2] = ["--minima", "--paths"];
+const FLAGS: [&str; 3] = ["--minima", "--paths", "--csv"];
 
 impl Args {
     fn of(case: &Case) -> Self {
@@ -199,7 +199,31 @@ fn js(case: &Case) -> Option<Reply> {
             calls::routes(json!(feeds))
         }
         "components" => calls::components(first(), a.number("until")),
+        "script" => return script(case, &a),
         other => panic!("no JavaScript twin for `{other}`"),
+    })
+}
+
+/// `script exercises`, `check` and `grade`; grading as CSV is the command
+/// line's alone (see `cli.rs`).
+fn script(case: &Case, a: &Args) -> Option<Reply> {
+    let text = |name: &str| match input(case, name) {
+        Value::String(text) => text,
+        other => panic!("{other:?}"),
+    };
+    let exercise = a.get("exercise").unwrap_or_default().to_owned();
+    Some(match a.positional[0].as_str() {
+        "exercises" => calls::exercises(),
+        "check" => calls::check_script(exercise, text(&a.positional[1]), None),
+        "grade" if a.flag("--csv") => return None,
+        "grade" => {
+            let scripts: serde_json::Map<String, Value> = a.positional[1..]
+                .iter()
+                .map(|f| (f.clone(), Value::String(text(f))))
+                .collect();
+            calls::grade_scripts(exercise, Value::Object(scripts))
+        }
+        other => panic!("no `script {other}`"),
     })
 }
 

@@ -285,3 +285,24 @@ pub fn pick_cell(
         seed,
     })
 }
+
+pub fn exercises() -> Reply {
+    ask(&kinolab_api::script::Exercises)
+}
+
+pub fn check_script(exercise: String, source: String, held_back: Option<bool>) -> Reply {
+    ask(&kinolab_api::script::CheckScript {
+        exercise,
+        source,
+        held_back: held_back.unwrap_or(true),
+    })
+}
+
+/// `scripts`: an object of learners' scripts by name (`{ "ana.rhai": "fn …" }`).
+pub fn grade_scripts(exercise: String, scripts: Value) -> Reply {
+    let scripts: std::collections::BTreeMap<String, String> = arg("scripts", scripts)?;
+    ask(&kinolab_api::script::Grade {
+        exercise,
+        scripts: scripts.into_iter().collect(),
+    })
+}

@@ -369,3 +369,34 @@ pub fn pick_cell(
         seed,
     ))
 }
+
+// ---------------------------------------------------------------- code exercises
+
+/// What `kinolab script exercises` prints: every graded code exercise,
+/// `[{ id, unit, lesson, hook, signature, returns, title, task, starter,
+/// hints, visible, held_back }]`.
+#[wasm_bindgen]
+pub fn exercises() -> Result<JsValue, JsError> {
+    to_js(calls::exercises())
+}
+
+/// What `kinolab script check` prints for a learner's `source`: `{
+/// exercise, passed, worlds: [{ name, visible, passed, reason, time,
+/// metrics, error }], error }`. With `heldBack` false only the worlds shown
+/// while working run.
+#[wasm_bindgen(js_name = checkScript)]
+pub fn check_script(
+    exercise: String,
+    source: String,
+    held_back: Option<bool>,
+) -> Result<JsValue, JsError> {
+    to_js(calls::check_script(exercise, source, held_back))
+}
+
+/// What `kinolab script grade` prints: one row per script of `scripts`
+/// (an object of sources by name), `[{ file, passed, worlds_passed,
+/// worlds, first_failure, error }]`.
+#[wasm_bindgen(js_name = gradeScripts)]
+pub fn grade_scripts(exercise: String, scripts: JsValue) -> Result<JsValue, JsError> {
+    to_js(calls::grade_scripts(exercise, from_js("scripts", scripts)?))
+}

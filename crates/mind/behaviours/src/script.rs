@@ -139,7 +139,7 @@ pub fn behave(
     p: &Percepts,
 ) -> Result<(Option<Response>, ScriptCall), ScriptError> {
     let call = script.call(vec![percepts(p)], p.time)?;
-    let r = response(&call.value, BEHAVE, p.time)?;
+    let r = response(&call.value, BEHAVE, p.time).map_err(|e| script.place(e))?;
     Ok((
         r,
         ScriptCall {

@@ -54,7 +54,8 @@ pub struct LawCall {
 pub(crate) fn command(script: &mut Script, p: &Polar, t: f64) -> Result<LawCall, ScriptError> {
     let args = vec![number(p.rho), number(p.alpha), number(p.beta)];
     let call = script.call(args, t)?;
-    let [v, omega] = finite(&call.value, ["v", "omega"], SIGNATURE, t)?;
+    let [v, omega] =
+        finite(&call.value, ["v", "omega"], SIGNATURE, t).map_err(|e| script.place(e))?;
     Ok(LawCall {
         t,
         rho: p.rho,

@@ -60,7 +60,9 @@ impl Custom {
         let answer = self
             .script
             .call_pure(vec![number(p.x), number(p.y)], at)
-            .and_then(|call| finite(&call.value, ["fx", "fy"], SIGNATURE, at));
+            .and_then(|call| {
+                finite(&call.value, ["fx", "fy"], SIGNATURE, at).map_err(|e| self.script.place(e))
+            });
         match answer {
             Ok([fx, fy]) => Vec2::new(fx, fy),
             Err(e) => {

@@ -32,6 +32,20 @@ pub enum Hook {
     Legs,
 }
 
+impl Hook {
+    /// What the learner's function answers.
+    pub fn returns(self) -> &'static str {
+        match self {
+            Hook::Control => "[v, omega]",
+            Hook::Behaviour => "[v, omega], #{x, y} or ()",
+            Hook::Coordinator => "a behaviour's name, [v, omega], #{x, y} or ()",
+            Hook::Field => "[fx, fy]",
+            Hook::Sequencer => "#{ replan, target }",
+            Hook::Legs => "#{ stance, at: [x, y, z] }",
+        }
+    }
+}
+
 /// One exercise: what to write, where it belongs, how it is graded.
 #[derive(Debug, Clone, Copy)]
 pub struct Exercise {

@@ -63,7 +63,7 @@ impl Verdict {
 
 /// Keys whose value may be `null` in an answer: "none" in the contract's
 /// sense (no time to goal, no ICR, no path), never a number that overflowed.
-pub const NULLABLE: [&str; 18] = [
+pub const NULLABLE: [&str; 21] = [
     "behaviour",
     // A joint without limits; a widget parameter with no default; a
     // straight drive's turn radius; a top-level group of bodies; a foot
@@ -85,7 +85,16 @@ pub const NULLABLE: [&str; 18] = [
     "time",
     "model_age_mean",
     "model_age_max",
+    // A graded world that passed has no reason; a script that ran
+    // cleanly no error (whose line, column and time may be unknown).
+    "reason",
+    "error",
+    "first_failure",
 ];
+
+/// Keys whose objects may hold nulls: a learner's script error, where the
+/// line or the time is not always known.
+const NULLS_INSIDE: [&str; 1] = ["error"];
 
 /// The longest error line, in characters.
 pub const MAX_ERROR_CHARS: usize = 420;
@@ -163,6 +172,9 @@ fn answer(case: &Case, outcome: &Outcome) -> Verdict {
     let Ok(text) = std::str::from_utf8(&outcome.stdout) else {
         return Verdict::Nonsense("stdout is not UTF-8".into());
     };
+    if case.args.iter().any(|a| a == "--csv") {
+        return csv(text);
+    }
     let Some(line) = text.strip_suffix('\n').filter(|l| !l.contains('\n')) else {
         return Verdict::Nonsense("stdout is not exactly one line".into());
     };
@@ -179,6 +191,34 @@ fn answer(case: &Case, outcome: &Outcome) -> Verdict {
     Verdict::Answer
 }
 
+/// A CSV answer: a header, then records of as many fields, each ended
+/// by a new line (one inside quotes belongs to its field).
+fn csv(text: &str) -> Verdict {
+    let mut records: Vec<usize> = Vec::new();
+    let (mut fields, mut quoted) = (1, false);
+    for c in text.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => fields += 1,
+            '\n' if !quoted => {
+                records.push(fields);
+                fields = 1;
+            }
+            _ => {}
+        }
+    }
+    if quoted || fields != 1 || !text.ends_with('\n') {
+        return Verdict::Nonsense("the CSV's last record is not ended".into());
+    }
+    match records.split_first() {
+        None => Verdict::Nonsense("an empty CSV".into()),
+        Some((header, rows)) => match rows.iter().position(|n| n != header) {
+            Some(i) => Verdict::Nonsense(format!("CSV row {} has not {header} fields", i + 1)),
+            None => Verdict::Answer,
+        },
+    }
+}
+
 /// The path of a `null` where a number belongs (any key outside
 /// [`NULLABLE`]).
 fn hidden_number(value: &Value, path: &str) -> Option<String> {
@@ -187,6 +227,8 @@ fn hidden_number(value: &Value, path: &str) -> Option<String> {
             let here = format!("{path}.{k}");
             if v.is_null() && !NULLABLE.contains(&k.as_str()) {
                 Some(here)
+            } else if NULLS_INSIDE.contains(&k.as_str()) {
+                None
             } else {
                 hidden_number(v, &here)
             }

@@ -10,7 +10,7 @@ use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
 use crate::seeds::Seeds;
 
 /// Every command the generators cover, with its share of the cases.
-pub const COMMANDS: [(&str, u32); 34] = [
+pub const COMMANDS: [(&str, u32); 35] = [
     ("leg-events", 2),
     ("stability", 4),
     ("analyze", 8),
@@ -44,6 +44,7 @@ pub const COMMANDS: [(&str, u32); 34] = [
     ("arena", 3),
     ("routes", 2),
     ("components", 4),
+    ("script", 3),
     ("usage", 4),
 ];
 
@@ -151,6 +152,7 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str, valid: bool) -> Ca
         "arena" => arena_case(&mut g, seeds),
         "routes" => routes_case(&mut g),
         "components" => components_case(&mut g, seeds),
+        "script" => script_case(&mut g, seeds),
         "mechanisms" | "catalogues" | "widgets" => {}
         _ => usage_case(&mut g),
     }
@@ -422,6 +424,51 @@ fn walk_case(g: &mut Gen<'_>, seeds: &Seeds) {
         let stride = g.pick_text(&["0.05", "0.1", "0.2"], &["-0.5", "9"]);
         g.option("--stride", &stride);
     }
+}
+
+/// Exercises cheap enough to grade inside a case's time limit.
+const QUICK_EXERCISES: [&str; 3] = ["control-park", "field-pull", "legs-walk"];
+
+/// `script exercises`, `script check SCRIPT --exercise ID` or `script
+/// grade --exercise ID FILES... [--csv]`, with the exercises' solutions
+/// (damaged or not) as scripts.
+fn script_case(g: &mut Gen<'_>, seeds: &Seeds) {
+    let mode = g.pick_text(&["exercises", "check", "grade"], &["run", ""]);
+    g.arg(&mode);
+    let exercise = g.pick_text(&QUICK_EXERCISES, &["no-such-exercise", ""]);
+    match mode.as_str() {
+        "check" => {
+            script_file(g, seeds, "mine.rhai");
+            g.option("--exercise", &exercise);
+        }
+        "grade" => {
+            g.option("--exercise", &exercise);
+            for name in ["ana.rhai", "ben.rhai"].iter().take(1 + g.below(2, 0)) {
+                script_file(g, seeds, name);
+            }
+            if g.dice.chance(0.5) {
+                g.flag("--csv");
+            }
+        }
+        _ => {}
+    }
+}
+
+/// A learner's script: a seed, a few characters changed unless only valid
+/// input is made.
+fn script_file(g: &mut Gen<'_>, seeds: &Seeds, name: &str) {
+    if !g.valid && g.dice.chance(0.2) {
+        g.special_path(name);
+        return;
+    }
+    let seed = g.dice.pick(&seeds.scripts).clone();
+    let text = if g.valid {
+        seed
+    } else {
+        String::from_utf8_lossy(&damage_text(g.dice, &seed)).into_owned()
+    };
+    g.case.files.push((name.to_owned(), FileSpec::Text(text)));
+    g.arg(name);
 }
 
 /// The world a case names (its file's text or its catalogue id).

@@ -19,6 +19,8 @@ pub struct Seeds {
     pub systems: Vec<String>,
     pub pushes: Vec<String>,
     pub beaches: Vec<String>,
+    /// Learners' scripts: the exercises' model and wrong solutions.
+    pub scripts: Vec<String>,
     /// Catalogue ids, for `catalogue:<id>` arguments.
     pub robot_ids: Vec<String>,
     pub model_ids: Vec<String>,
@@ -94,6 +96,10 @@ impl Seeds {
             cpgs: vec![CPG.to_owned(), CPG_LAB.to_owned()],
             pushes: PUSHES.iter().map(|p| (*p).to_owned()).collect(),
             beaches: BEACHES.iter().map(|b| (*b).to_owned()).collect(),
+            scripts: files_in(
+                &root.join("crates/teach/exercises/tests/solutions"),
+                ".rhai",
+            ),
             systems: files_in(&root.join("crates/talk/components/systems"), ".system.json"),
             gait_ids: kinolab_locomotion::named_ids().map(str::to_owned).collect(),
             world_ids: kinolab_world::catalogue::WORLDS

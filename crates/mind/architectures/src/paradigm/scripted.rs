@@ -62,6 +62,11 @@ fn state(s: &Situation<'_>) -> Dynamic {
 /// Ask the script; its answer read as a decision.
 pub fn decide(script: &mut Script, s: &Situation<'_>) -> Result<Decision, ScriptError> {
     let call = script.call(vec![state(s)], s.t)?;
+    read(&call, s).map_err(|e| script.place(e))
+}
+
+/// The script's answer as a decision.
+fn read(call: &kinolab_script::Call, s: &Situation<'_>) -> Result<Decision, ScriptError> {
     let wanted = "#{ replan: true or false, target: [x, y] or () }";
     let shape = || {
         ScriptError::shape(

@@ -52,7 +52,8 @@ impl ScriptState {
         let answer = script
             .call(vec![Dynamic::from_map(outputs), percepts(p)], p.time)
             .and_then(|call| {
-                let decision = choose(&call.value, r, p.time, drive)?;
+                let decision =
+                    choose(&call.value, r, p.time, drive).map_err(|e| script.place(e))?;
                 self.call = Some(ScriptCall {
                     who: "coordinator".into(),
                     returned: kinolab_script::value::describe(&call.value),

@@ -1,0 +1,266 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests may stop at the first surprise
+//! `kinolab script`: the exercise list as the contract writes it, a
+//! learner's script checked (exit 0 whether or not it passed), a class
+//! graded as JSON and CSV, and script runs given by path.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use serde_json::Value;
+
+fn kinolab(args: &[&str], dir: &Path) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_kinolab"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// A fresh folder holding the exercises' solutions.
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("kinolab-script-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let solutions = kinolab_fuzz::seeds::workspace().join("crates/teach/exercises/tests/solutions");
+    for entry in std::fs::read_dir(solutions).unwrap().flatten() {
+        std::fs::copy(entry.path(), dir.join(entry.file_name())).unwrap();
+    }
+    dir
+}
+
+#[test]
+fn exercises_are_listed_as_the_contract_says() {
+    let dir = folder("list");
+    let (code, out, _) = kinolab(&["script", "exercises"], &dir);
+    assert_eq!(code, 0);
+    let list: Vec<Value> = serde_json::from_str(&out).unwrap();
+    assert!(list.len() >= 8);
+    let control = list.iter().find(|e| e["id"] == "control-park").unwrap();
+    assert_eq!(control["hook"], "control");
+    assert_eq!(control["signature"], "control(rho, alpha, beta)");
+    assert_eq!(control["returns"], "[v, omega]");
+    assert_eq!(control["visible"], 2);
+    assert_eq!(control["held_back"], 3);
+    let hooks: std::collections::BTreeSet<&str> =
+        list.iter().map(|e| e["hook"].as_str().unwrap()).collect();
+    let all = [
+        "behaviour",
+        "control",
+        "coordinator",
+        "field",
+        "legs",
+        "sequencer",
+    ];
+    assert_eq!(hooks, all.into_iter().collect());
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_check_answers_whether_or_not_the_script_passed() {
+    let dir = folder("check");
+    let (code, out, err) = kinolab(
+        &[
+            "script",
+            "check",
+            "control-park.rhai",
+            "--exercise",
+            "control-park",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 0, "{err}");
+    let check: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(check["exercise"], "control-park");
+    assert_eq!(check["passed"], true);
+    assert_eq!(check["worlds"].as_array().unwrap().len(), 5);
+    assert!(check["worlds"][0]["metrics"]["distance"].as_f64().unwrap() < 0.01);
+
+    let (code, out, _) = kinolab(
+        &[
+            "script",
+            "check",
+            "control-park.no-beta.rhai",
+            "--exercise",
+            "control-park",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 0);
+    let check: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(check["passed"], false);
+    let reasons: Vec<&str> = check["worlds"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|w| w["reason"].as_str())
+        .collect();
+    assert!(
+        reasons.iter().any(|r| r.starts_with("arrived facing")),
+        "{reasons:?}"
+    );
+
+    // An endless loop: exit 0, the error with its line, column and time.
+    std::fs::write(
+        dir.join("loop.rhai"),
+        "fn control(rho, alpha, beta) {\n    loop { }\n}\n",
+    )
+    .unwrap();
+    let (code, out, _) = kinolab(
+        &["script", "check", "loop.rhai", "--exercise", "control-park"],
+        &dir,
+    );
+    assert_eq!(code, 0);
+    let check: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(check["passed"], false);
+    assert_eq!(check["error"]["line"], 2, "{check}");
+    assert_eq!(check["error"]["t"], 0.0);
+    assert!(
+        check["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("100 000 steps")
+    );
+
+    // A syntax error: nothing runs, the error names its line.
+    std::fs::write(
+        dir.join("broken.rhai"),
+        "fn control(rho, alpha, beta) {\n    [rho,\n",
+    )
+    .unwrap();
+    let (code, out, _) = kinolab(
+        &[
+            "script",
+            "check",
+            "broken.rhai",
+            "--exercise",
+            "control-park",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 0);
+    let check: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(check["worlds"].as_array().unwrap().len(), 0);
+    assert!(check["error"]["line"].as_u64().is_some(), "{check}");
+
+    // Bad input: exit 2, one line naming what is wrong.
+    let (code, _, err) = kinolab(
+        &[
+            "script",
+            "check",
+            "missing.rhai",
+            "--exercise",
+            "control-park",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 2);
+    assert!(err.contains("missing.rhai"), "{err}");
+    let (code, _, err) = kinolab(
+        &[
+            "script",
+            "check",
+            "control-park.rhai",
+            "--exercise",
+            "parking",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--exercise: no exercise called `parking`"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_class_is_graded_one_row_per_file_as_json_or_csv() {
+    let dir = folder("grade");
+    let files = [
+        "field-pull.rhai",
+        "field-pull.push.rhai",
+        "field-pull.x-only.rhai",
+    ];
+    let mut args = vec!["script", "grade", "--exercise", "field-pull"];
+    args.extend(files);
+    let (code, out, err) = kinolab(&args, &dir);
+    assert_eq!(code, 0, "{err}");
+    let rows: Vec<Value> = serde_json::from_str(&out).unwrap();
+    let passed: Vec<bool> = rows
+        .iter()
+        .map(|r| r["passed"].as_bool().unwrap())
+        .collect();
+    assert_eq!(passed, [true, false, false]);
+    assert_eq!(rows[0]["worlds_passed"], 5);
+    assert_eq!(rows[0]["first_failure"], Value::Null);
+    assert!(
+        rows[2]["first_failure"]
+            .as_str()
+            .unwrap()
+            .contains("stuck at (4.00")
+    );
+
+    args.push("--csv");
+    let (code, out, _) = kinolab(&args, &dir);
+    assert_eq!(code, 0);
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], "file,passed,worlds_passed,worlds,first_failure");
+    assert_eq!(lines[1], "\"field-pull.rhai\",true,5,5,\"\"");
+    assert!(
+        lines[3].starts_with("\"field-pull.x-only.rhai\",false,"),
+        "{}",
+        lines[3]
+    );
+    assert_eq!(lines.len(), 4);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_run_file_may_name_its_script_by_path() {
+    let dir = folder("path");
+    let run = |controller: Value| {
+        serde_json::json!({
+            "controller": controller,
+            "start": { "x": -1.0, "y": 0.5, "theta_deg": 0.0 },
+            "goal": { "x": 0.0, "y": 0.0, "theta_deg": 0.0 },
+        })
+        .to_string()
+    };
+    let source = std::fs::read_to_string(dir.join("control-park.rhai")).unwrap();
+    std::fs::write(
+        dir.join("by-path.run.json"),
+        run(serde_json::json!({"kind": "script", "path": "control-park.rhai"})),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("inline.run.json"),
+        run(serde_json::json!({"kind": "script", "source": source})),
+    )
+    .unwrap();
+    let (code, by_path, err) = kinolab(&["simulate", "by-path.run.json"], &dir);
+    assert_eq!(code, 0, "{err}");
+    let (_, inline, _) = kinolab(&["simulate", "inline.run.json"], &dir);
+    assert_eq!(by_path, inline);
+    let report: Value = serde_json::from_str(&by_path).unwrap();
+    assert_eq!(report["reached"], true);
+
+    std::fs::write(
+        dir.join("lost.run.json"),
+        run(serde_json::json!({"kind": "script", "path": "nowhere.rhai"})),
+    )
+    .unwrap();
+    let (code, _, err) = kinolab(&["simulate", "lost.run.json"], &dir);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("lost.run.json")
+            && err.contains("controller.path")
+            && err.contains("nowhere.rhai"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(dir);
+}
