@@ -19,6 +19,9 @@ pub enum ErrorKind {
     Missing,
     /// Too many operations in one call: a loop that never ends.
     Endless,
+    /// Too many operations over the whole run: far more work each call
+    /// than the job needs.
+    TooSlow,
     /// Functions calling functions too deep: recursion that never stops.
     TooDeep,
     /// A string, array or map grown past its bound.
@@ -180,6 +183,13 @@ impl ScriptError {
                 format!(
                     "your function did more than {} steps{when}: is there a loop that never ends?",
                     group(LIMITS.operations)
+                ),
+            ),
+            EvalAltResult::ErrorTerminated(..) => (
+                ErrorKind::TooSlow,
+                format!(
+                    "your function has done more than {} steps in all{when}: does it do far more work each time than the job needs?",
+                    group(LIMITS.run_operations)
                 ),
             ),
             EvalAltResult::ErrorStackOverflow(_) => (

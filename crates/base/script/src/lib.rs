@@ -24,4 +24,4 @@ pub mod value;
 pub use error::{ErrorKind, ScriptError, When};
 pub use rhai::{Array, Dynamic, Map};
 pub use sandbox::{LIMITS, Limits, Output};
-pub use script::{Call, Script, Signature};
+pub use script::{Call, MAX_SOURCE, Script, Signature};

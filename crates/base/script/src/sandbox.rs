@@ -24,6 +24,9 @@ pub struct Limits {
     pub map: usize,
     /// Lines `print` may write in one call, and `plot` values.
     pub prints: usize,
+    /// Operations in all the calls of one run (a run of 2 000 calls that
+    /// each stay under `operations` could otherwise take minutes).
+    pub run_operations: u64,
 }
 
 /// The lab's bounds: far above what a controller or a behaviour needs,
@@ -35,6 +38,7 @@ pub const LIMITS: Limits = Limits {
     array: 10_000,
     map: 1_000,
     prints: 20,
+    run_operations: 10_000_000,
 };
 
 /// What one call printed and plotted.
@@ -47,8 +51,17 @@ pub struct Output {
 /// Where the engine's `print` and `plot` put what they are given.
 pub(crate) type Sink = Rc<RefCell<Output>>;
 
-/// An engine with the lab's packages and bounds, writing to `sink`.
-pub(crate) fn engine(sink: &Sink) -> Engine {
+/// The operations a call may still use before its run's budget is spent,
+/// and those the call has used so far.
+#[derive(Debug, Default)]
+pub(crate) struct Budget {
+    pub left: std::cell::Cell<u64>,
+    pub used: std::cell::Cell<u64>,
+}
+
+/// An engine with the lab's packages and bounds, writing to `sink` and
+/// counting operations against `budget`.
+pub(crate) fn engine(sink: &Sink, budget: &Rc<Budget>) -> Engine {
     let mut e = Engine::new_raw();
     CorePackage::new().register_into_engine(&mut e);
     ArithmeticPackage::new().register_into_engine(&mut e);
@@ -66,6 +79,11 @@ pub(crate) fn engine(sink: &Sink) -> Engine {
         .set_max_variables(1_000)
         .set_max_functions(200);
     same_maths(&mut e);
+    let counted = budget.clone();
+    e.on_progress(move |ops| {
+        counted.used.set(ops);
+        (ops > counted.left.get()).then_some(rhai::Dynamic::UNIT)
+    });
     let prints = sink.clone();
     e.on_print(move |text| {
         let mut out = prints.borrow_mut();
@@ -102,7 +120,9 @@ pub(crate) type Trail = Rc<std::cell::Cell<rhai::Position>>;
 /// call, not at the line that caused them.
 #[allow(deprecated)] // Rhai marks its debugger interface as volatile, not deprecated
 pub(crate) fn locating(sink: &Sink, trail: &Trail) -> Engine {
-    let mut e = engine(sink);
+    let budget = Rc::new(Budget::default());
+    budget.left.set(LIMITS.run_operations);
+    let mut e = engine(sink, &budget);
     let trail = trail.clone();
     e.register_debugger(
         |_, debugger| debugger,

@@ -1,11 +1,12 @@
 //! A learner's script: compiled once, its function called once per tick.
 
+use std::cell::Cell;
 use std::rc::Rc;
 
 use rhai::{AST, CallFnOptions, Dynamic, Engine, Map, Scope};
 
 use crate::error::{ScriptError, When};
-use crate::sandbox::{Output, Sink, Trail, engine, locating};
+use crate::sandbox::{Budget, LIMITS, Output, Sink, Trail, engine, locating};
 
 /// The function a hook calls, as the learner must write it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,6 +31,10 @@ pub const MAX_SOURCE: usize = 64 * 1024;
 pub struct Script {
     engine: Rc<Engine>,
     sink: Sink,
+    /// Shared with the engine: what the call under way may use.
+    budget: Rc<Budget>,
+    /// Operations this script's calls have used in this run.
+    spent: Cell<u64>,
     ast: Rc<AST>,
     signature: Signature,
     /// `this` inside the learner's function: a map that starts empty and
@@ -71,7 +76,8 @@ impl Script {
             return Err(ScriptError::too_long(source.len(), MAX_SOURCE));
         }
         let sink = Sink::default();
-        let engine = engine(&sink);
+        let budget = Rc::new(Budget::default());
+        let engine = engine(&sink, &budget);
         let ast = engine
             .compile(source)
             .map_err(|e| ScriptError::syntax(&e))?;
@@ -86,6 +92,8 @@ impl Script {
         Ok(Script {
             engine: Rc::new(engine),
             sink,
+            budget,
+            spent: Cell::new(0),
             ast: Rc::new(ast),
             signature,
             memory: Dynamic::from_map(Map::new()),
@@ -123,6 +131,9 @@ impl Script {
         at: When,
     ) -> Result<Call, ScriptError> {
         *self.sink.borrow_mut() = Output::default();
+        self.budget.used.set(0);
+        let left = LIMITS.run_operations.saturating_sub(self.spent.get());
+        self.budget.left.set(left);
         let before = (memory.clone(), args.clone());
         let options = CallFnOptions::new().eval_ast(false).bind_this_ptr(memory);
         let result = self.engine.call_fn_with_options::<Dynamic>(
@@ -133,6 +144,7 @@ impl Script {
             args,
         );
         let output = std::mem::take(&mut *self.sink.borrow_mut());
+        self.spent.set(self.spent.get() + self.budget.used.get());
         match result {
             Ok(value) => {
                 *self.last.borrow_mut() = Some(before);

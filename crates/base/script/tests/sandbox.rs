@@ -79,6 +79,30 @@ fn hostile_scripts_stop_with_a_message_in_words() {
 }
 
 #[test]
+fn a_run_of_heavy_calls_stops_once_its_budget_is_spent() {
+    // Each call stays under the per-call bound, but 10 million operations
+    // in all would freeze a tab for seconds.
+    let mut s = compile(
+        "fn control(rho, alpha, beta) {\n    let n = 0;\n    while n < 5000 { n += 1; }\n    [0.0, 0.0]\n}",
+    );
+    let mut calls = 0;
+    let e = loop {
+        match call(&mut s, calls as f64 * 0.01) {
+            Ok(_) => calls += 1,
+            Err(e) => break e,
+        }
+        assert!(calls < 3000, "never stopped");
+    };
+    assert_eq!(e.kind, ErrorKind::TooSlow, "{e}");
+    assert!(e.message.contains("10 000 000 steps in all"), "{e}");
+    assert!((100..1000).contains(&calls), "{calls} calls");
+    // A copy made before the run spent anything starts afresh.
+    let fresh = compile("fn control(rho, alpha, beta) { [rho, 0.0] }");
+    let mut copy = fresh.clone();
+    assert!(call(&mut copy, 0.0).is_ok());
+}
+
+#[test]
 fn the_sandbox_s_stops_name_the_line_that_caused_them() {
     let cases = [
         (

@@ -35,6 +35,9 @@ pub const FOOT: kinolab_script::Signature = kinolab_script::Signature {
     params: &["leg", "phase"],
 };
 
+/// Whether a foot stands, and where it should be (body frame, m).
+pub type Planned = (bool, Vector3<f64>);
+
 /// The catalogue hexapod walking one gait.
 #[derive(Debug, Clone)]
 pub struct Walker {
@@ -112,6 +115,15 @@ impl Walker {
     /// Whether each leg stands at `tau`, and where its foot should be: the
     /// gait's timing, or the learner's sequencer when there is one.
     pub fn plan(&self, tau: f64) -> Result<Vec<(bool, Vector3<f64>)>, kinolab_script::ScriptError> {
+        Ok(self.plan_told(tau)?.into_iter().map(|(p, _)| p).collect())
+    }
+
+    /// [`Walker::plan`], with what the sequencer printed and plotted for
+    /// each leg (nothing for the gait's own timing).
+    pub fn plan_told(
+        &self,
+        tau: f64,
+    ) -> Result<Vec<(Planned, kinolab_script::Output)>, kinolab_script::ScriptError> {
         (0..LEGS.len()).map(|i| self.plan_leg(i, tau)).collect()
     }
 
@@ -119,10 +131,11 @@ impl Walker {
         &self,
         i: usize,
         tau: f64,
-    ) -> Result<(bool, Vector3<f64>), kinolab_script::ScriptError> {
+    ) -> Result<(Planned, kinolab_script::Output), kinolab_script::ScriptError> {
         let Some(script) = &self.sequencer else {
             let sigma = (tau - self.gait.legs[i].phase).rem_euclid(1.0);
-            return Ok((sigma >= 1.0 - self.gait.duty_factor, self.target(i, tau)));
+            let stance = sigma >= 1.0 - self.gait.duty_factor;
+            return Ok(((stance, self.target(i, tau)), Default::default()));
         };
         let n = self.neutral[i];
         let leg = kinolab_script::value::map([
@@ -134,7 +147,8 @@ impl Walker {
         ]);
         let at = kinolab_script::When::Phase(tau);
         let call = script.call_pure(vec![leg, kinolab_script::value::number(tau)], at)?;
-        foot_answer(&call.value, at).map_err(|e| script.place(e))
+        let planned = foot_answer(&call.value, at).map_err(|e| script.place(e))?;
+        Ok((planned, call.output))
     }
 
     /// Where leg `i`'s foot should be at `tau`, body frame.

@@ -60,10 +60,15 @@ impl Source {
         named: impl FnOnce(&str) -> Result<T, FieldError>,
     ) -> Result<T, Error> {
         match self {
-            // A name is the whole input: what is wrong is the name itself.
-            Source::Named(name) => {
-                named(Self::id(name, prefix)).map_err(|e| FieldError::new("", e.message))
-            }
+            // A compact code names the part of it that is wrong; a field
+            // that only repeats the input's role says nothing more.
+            Source::Named(name) => named(Self::id(name, prefix)).map_err(|e| {
+                if e.field == role {
+                    FieldError::new("", e.message)
+                } else {
+                    e
+                }
+            }),
             Source::Text(text) => within_bound(text).and_then(|()| read(text)),
         }
         .map_err(|e| Error::input(role, e))

@@ -136,6 +136,20 @@ fn the_checker_rejects_unknown_widgets_bad_parameters_and_missing_images() {
     );
     let (code, err) = check_lesson_body("ok", "Text.\n\n![a wheel](wheel.png)\n", true);
     assert_eq!((code, err.as_str()), (0, ""));
+    // An exercise block names a graded exercise that exists.
+    let exercise = |id: &str| format!("Text.\n\n```exercise\n{id}\n```\n");
+    let (code, err) = check_lesson_body("exercise", &exercise("control-park"), false);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let (code, err) = check_lesson_body("no-exercise", &exercise("control-parking"), false);
+    assert_eq!(code, 2);
+    assert!(
+        err.starts_with("kinolab: 01-demo/01-a.md:9: parameter `exercise`")
+            && err.contains("control-parking"),
+        "{err}"
+    );
+    let (code, err) = check_lesson_body("two-words", &exercise("park the robot"), false);
+    assert_eq!(code, 2);
+    assert!(err.contains("the exercise's id alone"), "{err}");
 }
 
 #[test]

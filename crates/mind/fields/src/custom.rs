@@ -8,7 +8,7 @@
 use std::cell::RefCell;
 
 use kinolab_script::value::{finite, number};
-use kinolab_script::{Script, ScriptError, Signature, When};
+use kinolab_script::{Output, Script, ScriptError, Signature, When};
 
 use crate::{Mat2, Vec2};
 
@@ -51,20 +51,22 @@ impl Custom {
         })
     }
 
+    /// What the script answers at `p`, and what it printed and plotted.
+    pub fn answer(&self, p: Vec2) -> Result<(Vec2, Output), ScriptError> {
+        let at = When::Point(p.x, p.y);
+        let call = self.script.call_pure(vec![number(p.x), number(p.y)], at)?;
+        let [fx, fy] =
+            finite(&call.value, ["fx", "fy"], SIGNATURE, at).map_err(|e| self.script.place(e))?;
+        Ok((Vec2::new(fx, fy), call.output))
+    }
+
     /// The vector at `p` (zero once the script has failed).
     pub fn vector(&self, p: Vec2) -> Vec2 {
         if self.failed.borrow().is_some() {
             return Vec2::zeros();
         }
-        let at = When::Point(p.x, p.y);
-        let answer = self
-            .script
-            .call_pure(vec![number(p.x), number(p.y)], at)
-            .and_then(|call| {
-                finite(&call.value, ["fx", "fy"], SIGNATURE, at).map_err(|e| self.script.place(e))
-            });
-        match answer {
-            Ok([fx, fy]) => Vec2::new(fx, fy),
+        match self.answer(p) {
+            Ok((f, _)) => f,
             Err(e) => {
                 *self.failed.borrow_mut() = Some(e);
                 Vec2::zeros()

@@ -30,6 +30,10 @@ pub struct Progress {
     pub quizzes: BTreeMap<String, QuizRecord>,
     /// The chosen theme; `None` follows the system.
     pub dark: Option<bool>,
+    /// Each widget the learner changed, as its link holds it, by widget id
+    /// (`unit/lesson@wN`): the code they wrote, the run they were at.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub widgets: BTreeMap<String, String>,
 }
 
 impl Default for Progress {
@@ -39,6 +43,7 @@ impl Default for Progress {
             visited: BTreeSet::new(),
             quizzes: BTreeMap::new(),
             dark: None,
+            widgets: BTreeMap::new(),
         }
     }
 }

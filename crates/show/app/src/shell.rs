@@ -162,7 +162,9 @@ impl KinolabApp {
             })
             .collect();
         states.sort();
-        let hash = route::lesson_hash(address, &states);
+        let address = address.clone();
+        self.keep_widgets(&address, &states);
+        let hash = route::lesson_hash(&address, &states);
         if self.state_hash.as_deref() == Some(hash.as_str()) {
             return None;
         }
@@ -177,13 +179,53 @@ impl KinolabApp {
     }
 
     fn open(&mut self, page: Page) {
-        if let Page::Lesson(address) = &page
-            && self.progress.visited.insert(address.clone())
-        {
-            self.progress_dirty = true;
+        if let Page::Lesson(address) = &page {
+            if self.progress.visited.insert(address.clone()) {
+                self.progress_dirty = true;
+            }
+            self.restore_kept_widgets(address);
         }
         self.page = page;
         self.scroll_to_top = true;
+    }
+
+    /// Widgets of the lesson at `address` the learner left changed on an
+    /// earlier visit come back as they were, unless a link says otherwise
+    /// or they are already open.
+    fn restore_kept_widgets(&mut self, address: &str) {
+        let prefix = format!("{address}@w");
+        for (id, state) in self.progress.widgets.range(prefix.clone()..) {
+            if !id.starts_with(&prefix) {
+                break;
+            }
+            if !self.widgets.contains_key(id) && !self.restore.contains_key(id) {
+                self.restore.insert(id.clone(), state.clone());
+            }
+        }
+    }
+
+    /// Keep the current lesson's widget states in the progress, so that
+    /// what the learner did survives leaving the lesson or the lab.
+    fn keep_widgets(&mut self, address: &str, states: &[(usize, String)]) {
+        let prefix = format!("{address}@w");
+        let open: Vec<String> = self
+            .widgets
+            .keys()
+            .filter(|id| id.starts_with(&prefix))
+            .cloned()
+            .collect();
+        for id in open {
+            let now = id
+                .strip_prefix(&prefix)
+                .and_then(|n| n.parse::<usize>().ok())
+                .and_then(|n| states.iter().find(|(k, _)| *k == n))
+                .map(|(_, s)| s.clone());
+            let changed = match now {
+                Some(state) => self.progress.widgets.insert(id, state.clone()) != Some(state),
+                None => self.progress.widgets.remove(&id).is_some(),
+            };
+            self.progress_dirty |= changed;
+        }
     }
 
     /// The hash the browser should now show, if it changed.

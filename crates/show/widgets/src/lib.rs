@@ -25,6 +25,7 @@
 pub mod architecture;
 pub mod autonomy;
 pub mod behaviour;
+pub mod code;
 pub mod components;
 pub mod control;
 pub mod design;

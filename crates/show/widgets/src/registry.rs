@@ -9,8 +9,8 @@ use kinolab_lessons::WidgetSpec;
 
 use crate::widget::{Constructor, LabWidget};
 use crate::{
-    architecture, autonomy, behaviour, components, control, design, fields, locomotion, mechanism,
-    wheels,
+    architecture, autonomy, behaviour, code, components, control, design, fields, locomotion,
+    mechanism, wheels,
 };
 
 /// Every widget's constructor, by its schema name.
@@ -42,6 +42,7 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("behaviour-arena", behaviour::arena::create),
     ("braitenberg", behaviour::braitenberg::create),
     ("blend-or-choose", behaviour::frog::create),
+    ("code", code::create),
 ];
 
 /// The widgets that simulate something over time: each has the one

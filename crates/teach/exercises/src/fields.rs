@@ -16,7 +16,7 @@ pub struct Trial {
 }
 
 /// The descent's step, m, and the most steps it may take.
-const STEPS: Steps = Steps {
+pub(crate) const STEPS: Steps = Steps {
     step: 0.01,
     max_steps: 3000,
 };

@@ -100,7 +100,7 @@ fn careful() -> Vec<World> {
 }
 
 /// The walker for `t`, the learner's sequencer in charge.
-fn walker(source: &str, t: &Trial) -> Result<Walker, String> {
+pub(crate) fn walker(source: &str, t: &Trial) -> Result<Walker, String> {
     let mut gait =
         kinolab_locomotion::named("hexapod-tripod").ok_or("the hexapod's gait is missing")?;
     gait.com = t.com;

@@ -14,6 +14,8 @@ pub mod behaviours;
 pub mod control;
 pub mod fields;
 pub mod legs;
+pub mod packed;
+pub mod trace;
 
 use std::collections::BTreeMap;
 

@@ -204,6 +204,7 @@ impl<'src> BodyParser<'_, 'src> {
                 let content_line = self.line_of(range.start) + 1;
                 match info.as_str() {
                     "widget" => Block::Widget(self.widget(&text, content_line)?),
+                    "exercise" => Block::Widget(self.exercise(&text, content_line)?),
                     "quiz" => Block::Quiz(self.quiz(&text, content_line)?),
                     _ => Block::Code { lang: info, text },
                 }
@@ -418,6 +419,25 @@ impl<'src> BodyParser<'_, 'src> {
             }
         }
         Ok(cells)
+    }
+
+    /// A graded code exercise: its id on the first line, shown in the code
+    /// panel (the `code` widget), which the widget schema checks like any
+    /// widget, the id against the exercises there are.
+    fn exercise(&self, text: &str, first_line: usize) -> Result<WidgetSpec, LessonError> {
+        let id = text.trim();
+        if id.is_empty() || id.contains(char::is_whitespace) || id.contains(':') {
+            return Err(LessonError::new(
+                self.file,
+                first_line,
+                "an exercise block holds the exercise's id alone, such as `control-park`",
+            ));
+        }
+        Ok(WidgetSpec {
+            name: "code".to_owned(),
+            params: vec![("exercise".to_owned(), id.to_owned())],
+            line: first_line - 1,
+        })
     }
 
     fn widget(&self, text: &str, first_line: usize) -> Result<WidgetSpec, LessonError> {

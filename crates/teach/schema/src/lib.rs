@@ -98,6 +98,8 @@ pub enum Catalogue {
     Worlds,
     /// Classic potential fields and their failures.
     Fields,
+    /// Graded code exercises (`kinolab script exercises`).
+    Exercises,
 }
 
 impl Catalogue {
@@ -120,6 +122,7 @@ impl Catalogue {
                 .iter()
                 .map(|p| p.id)
                 .collect(),
+            Catalogue::Exercises => kinolab_exercises::all().iter().map(|e| e.id).collect(),
         }
     }
 }

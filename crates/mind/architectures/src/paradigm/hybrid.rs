@@ -95,6 +95,8 @@ pub struct Hybrid {
     /// stopped it, and whether the last search found no way.
     script: Option<Box<kinolab_script::Script>>,
     pub failed: Option<Box<kinolab_script::ScriptError>>,
+    /// The learner's sequencer's last question and answer.
+    pub asked: Option<Box<scripted::Asked>>,
     no_path: bool,
 }
 
@@ -108,6 +110,7 @@ impl Hybrid {
             radius: settings.body.radius(),
             script: settings.sequencer.clone().map(Box::new),
             failed: None,
+            asked: None,
             no_path: false,
         })
     }
@@ -182,7 +185,10 @@ impl Hybrid {
             .as_mut()
             .map(|s| scripted::decide(s, &situation))
         {
-            Some(Ok(d)) => d,
+            Some(Ok((d, asked))) => {
+                self.asked = Some(Box::new(asked));
+                d
+            }
             Some(Err(e)) => {
                 self.failed = Some(Box::new(e));
                 self.script = None;

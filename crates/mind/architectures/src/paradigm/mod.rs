@@ -153,6 +153,14 @@ impl Controller {
         }
     }
 
+    /// The learner's sequencer's last question and answer, if it has one.
+    pub fn asked(&self) -> Option<&scripted::Asked> {
+        match self {
+            Controller::Hybrid(c) => c.asked.as_deref(),
+            _ => None,
+        }
+    }
+
     /// Behaviour evaluations so far.
     pub fn evaluations(&self) -> usize {
         match self {

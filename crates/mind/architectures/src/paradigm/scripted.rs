@@ -59,10 +59,45 @@ fn state(s: &Situation<'_>) -> Dynamic {
     ])
 }
 
+/// One question to the learner's sequencer, for the stepper: what it was
+/// given, what it answered, what it printed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Asked {
+    pub given: Vec<(&'static str, String)>,
+    pub returned: String,
+    pub output: kinolab_script::Output,
+}
+
+/// The situation in words, entry by entry.
+fn given(s: &Situation<'_>) -> Vec<(&'static str, String)> {
+    let point =
+        |p: Option<[f64; 2]>| p.map_or("()".to_owned(), |p| format!("[{:.2}, {:.2}]", p[0], p[1]));
+    let plan = match s.plan {
+        [] => "[]".to_owned(),
+        [first, ..] => format!("{} waypoints, next {}", s.plan.len(), point(Some(*first))),
+    };
+    vec![
+        ("t", format!("{:.2}", s.t)),
+        ("at", point(Some([s.at.x, s.at.y]))),
+        ("goal", point(s.goal.map(|g| [g.x, g.y]))),
+        ("plan", plan),
+        ("planned_for", point(s.planned_for)),
+        ("planning", s.planning.to_string()),
+        ("no_path", s.no_path.to_string()),
+        ("blocked", s.blocked.to_string()),
+    ]
+}
+
 /// Ask the script; its answer read as a decision.
-pub fn decide(script: &mut Script, s: &Situation<'_>) -> Result<Decision, ScriptError> {
+pub fn decide(script: &mut Script, s: &Situation<'_>) -> Result<(Decision, Asked), ScriptError> {
     let call = script.call(vec![state(s)], s.t)?;
-    read(&call, s).map_err(|e| script.place(e))
+    let decision = read(&call, s).map_err(|e| script.place(e))?;
+    let asked = Asked {
+        given: given(s),
+        returned: kinolab_script::value::describe(&call.value),
+        output: call.output,
+    };
+    Ok((decision, asked))
 }
 
 /// The script's answer as a decision.

@@ -6,6 +6,7 @@
 mod architecture;
 mod autonomy;
 mod behaviour;
+mod code;
 mod components;
 mod control;
 mod design;
@@ -19,7 +20,7 @@ use crate::{Kind, Param, WidgetSchema};
 pub use wheels::robot_of;
 
 /// Every domain's widgets, in the gallery's order.
-static DOMAINS: [&[WidgetSchema]; 10] = [
+static DOMAINS: [&[WidgetSchema]; 11] = [
     locomotion::WIDGETS,
     architecture::WIDGETS,
     components::WIDGETS,
@@ -30,6 +31,7 @@ static DOMAINS: [&[WidgetSchema]; 10] = [
     mechanism::WIDGETS,
     fields::WIDGETS,
     behaviour::WIDGETS,
+    code::WIDGETS,
 ];
 
 /// Every widget, domain by domain.

@@ -1,0 +1,319 @@
+//! The code panel: the learner writes the function a graded exercise asks
+//! for, runs it on the worlds they can see, steps through what it saw and
+//! answered at any instant, and submits it to be graded on worlds held
+//! back. Hints unlock one by one after failed submissions. The code and
+//! the hints travel in the widget's link (the code packed), so a reload or
+//! a shared link brings them back.
+
+mod editor;
+mod stepper;
+
+use std::rc::Rc;
+
+use egui::RichText;
+use kinolab_exercises::{Check, Exercise, World};
+use kinolab_script::ScriptError;
+use serde::{Deserialize, Serialize};
+
+use crate::link::{self, Moment};
+use crate::player::Player;
+use crate::theme;
+use crate::widget::{LabWidget, Params, SavedRun};
+use stepper::Stepping;
+
+/// The widget's name in the schema.
+const NAME: &str = "code";
+/// The learner's script as "Save run" writes it.
+const FILE: &str = "mine.rhai";
+
+/// What the lesson sets and a link carries.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct Settings {
+    exercise: String,
+    /// The learner's code, packed; `None` while it is the starter.
+    code: Option<String>,
+    /// The world the stepper shows, counting from 1.
+    world: usize,
+    /// Hints unlocked.
+    hints: usize,
+}
+
+struct Code {
+    settings: Settings,
+    initial: Settings,
+    exercise: Exercise,
+    worlds: Vec<World>,
+    source: String,
+    /// The code's syntax error, checked as it is typed.
+    syntax: Option<ScriptError>,
+    /// The last Run (visible worlds) or Submit (all of them).
+    results: Option<Check>,
+    submitted: bool,
+    player: Option<Player<Stepping>>,
+}
+
+pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
+    Ok(Box::new(Code::new(p.settings()?)?))
+}
+
+impl Code {
+    fn new(settings: Settings) -> Result<Self, String> {
+        let exercise = kinolab_exercises::find(&settings.exercise)
+            .ok_or_else(|| format!("no exercise `{}`", settings.exercise))?;
+        let source = match &settings.code {
+            Some(packed) => kinolab_exercises::packed::unpack(packed)?,
+            None => exercise.starter.to_owned(),
+        };
+        let worlds = (exercise.worlds)();
+        if settings.world > worlds.len() {
+            return Err(format!(
+                "the exercise has {} worlds, not {}",
+                worlds.len(),
+                settings.world
+            ));
+        }
+        let mut code = Code {
+            initial: settings.clone(),
+            settings,
+            exercise,
+            worlds,
+            source,
+            syntax: None,
+            results: None,
+            submitted: false,
+            player: None,
+        };
+        code.edited();
+        code.step_through(code.settings.world - 1);
+        Ok(code)
+    }
+
+    /// After any edit: the code in the settings, its syntax checked.
+    fn edited(&mut self) {
+        self.settings.code = (self.source != self.exercise.starter)
+            .then(|| kinolab_exercises::packed::pack(&self.source));
+        self.syntax = kinolab_script::Script::compile(&self.source, self.exercise.signature).err();
+    }
+
+    /// Run on the worlds shown, and step through the chosen one.
+    fn run(&mut self) {
+        self.results = Some(self.exercise.check(&self.source, false));
+        self.submitted = false;
+        let world = self.settings.world - 1;
+        let shown = if self.worlds[world].visible { world } else { 0 };
+        self.step_through(shown);
+    }
+
+    /// Grade on every world; a failure unlocks the next hint.
+    fn submit(&mut self) {
+        let check = self.exercise.check(&self.source, true);
+        if !check.passed {
+            self.settings.hints = (self.settings.hints + 1).min(self.exercise.hints.len());
+        }
+        let failing = check.worlds.iter().position(|w| !w.passed);
+        self.results = Some(check);
+        self.submitted = true;
+        if let Some(i) = failing {
+            self.step_through(i);
+        }
+    }
+
+    /// Back to the starter code.
+    fn reset(&mut self) {
+        self.source = self.exercise.starter.to_owned();
+        self.results = None;
+        self.edited();
+        self.step_through(0);
+    }
+
+    /// Record world `i` with the current code and show it in the stepper.
+    fn step_through(&mut self, i: usize) {
+        let Some(world) = self.worlds.get(i) else {
+            return;
+        };
+        self.settings.world = i + 1;
+        let speed = self.player.as_ref().map(|p| p.speed);
+        let trace = self.exercise.trace(&self.source, world);
+        let mut player = Player::new(Stepping::new(Rc::new(trace)));
+        if let Some(speed) = speed {
+            player.speed = speed;
+        }
+        self.player = Some(player);
+    }
+
+    fn header(&self, ui: &mut egui::Ui) {
+        ui.label(
+            RichText::new(self.exercise.title)
+                .strong()
+                .size(theme::BODY_SIZE),
+        );
+        ui.label(self.exercise.task);
+        let signature = self.exercise.signature.text();
+        let returns = self.exercise.hook.returns();
+        ui.label(
+            RichText::new(format!("You write {signature}, answering {returns}."))
+                .size(theme::LABEL_SIZE)
+                .weak(),
+        );
+    }
+
+    fn buttons(&mut self, ui: &mut egui::Ui) {
+        crate::widget::control_row(ui, |ui| {
+            let runnable = self.syntax.is_none();
+            if ui
+                .add_enabled(runnable, egui::Button::new("Run"))
+                .on_hover_text("Run your code on the worlds shown, and step through it")
+                .clicked()
+            {
+                self.run();
+            }
+            if ui
+                .add_enabled(runnable, egui::Button::new("Submit"))
+                .on_hover_text("Grade your code on every world, those held back too")
+                .clicked()
+            {
+                self.submit();
+            }
+            if ui
+                .button("Reset")
+                .on_hover_text("Start again from the starter code")
+                .clicked()
+            {
+                self.reset();
+            }
+        });
+    }
+
+    /// Each world's verdict, with a button to step through it.
+    fn results(&mut self, ui: &mut egui::Ui) {
+        let Some(check) = &self.results else {
+            let visible = self.worlds.iter().filter(|w| w.visible).count();
+            let held = self.worlds.len() - visible;
+            ui.label(format!(
+                "Run tries your code on the {visible} worlds shown; Submit also on {held} held back."
+            ));
+            return;
+        };
+        let (good, bad) = (theme::good_color(ui), theme::error_color(ui));
+        let verdict = match (check.passed, self.submitted) {
+            (true, true) => ("Passed on every world, those held back too.", good),
+            (true, false) => ("Passed on the worlds shown: now Submit.", good),
+            (false, _) => ("Not yet:", bad),
+        };
+        ui.label(RichText::new(verdict.0).color(verdict.1).strong());
+        let mut open = None;
+        for w in &check.worlds {
+            ui.horizontal_wrapped(|ui| {
+                let (mark, color) = if w.passed {
+                    ("passed", good)
+                } else {
+                    ("failed", bad)
+                };
+                ui.label(RichText::new(mark).color(color));
+                let held = if w.visible { "" } else { " (held back)" };
+                ui.label(format!("{}{held}", w.name));
+                if let Some(reason) = &w.reason {
+                    ui.label(RichText::new(reason).color(bad));
+                }
+                if ui.small_button("Step through").clicked() {
+                    open = self.worlds.iter().position(|x| x.name == w.name);
+                }
+            });
+        }
+        if let Some(i) = open {
+            self.step_through(i);
+        }
+    }
+
+    fn hints(&self, ui: &mut egui::Ui) {
+        let shown = self.settings.hints.min(self.exercise.hints.len());
+        if shown == 0 {
+            return;
+        }
+        ui.label(RichText::new("Hints").strong());
+        for hint in &self.exercise.hints[..shown] {
+            ui.label(format!("· {hint}"));
+        }
+    }
+
+    /// "Save run": the code, for `kinolab script check`.
+    fn exports(&self, ui: &mut egui::Ui) {
+        let command = format!(
+            "kinolab script check {FILE} --exercise {}",
+            self.exercise.id
+        );
+        let make = || Ok(self.source.clone());
+        crate::export::bar(
+            ui,
+            ui.scope_id().with("code-exports"),
+            &[crate::export::Export::Run {
+                file: FILE,
+                command: &command,
+                make: &make,
+            }],
+        );
+    }
+}
+
+impl LabWidget for Code {
+    fn ui(&mut self, ui: &mut egui::Ui) {
+        self.header(ui);
+        ui.add_space(4.0);
+        if editor::editor(ui, &mut self.source, self.syntax.as_ref()) {
+            self.edited();
+        }
+        self.buttons(ui);
+        self.results(ui);
+        self.hints(ui);
+        ui.separator();
+        let name = self.worlds[self.settings.world - 1].name.clone();
+        ui.label(RichText::new(format!("Stepping through: {name}")).strong());
+        if let Some(player) = &mut self.player {
+            stepper::show(ui, player);
+        }
+        self.exports(ui);
+    }
+
+    fn state(&self) -> Option<String> {
+        let moment = self.player.as_ref().map(Player::moment).unwrap_or_default();
+        link::write(NAME, &self.settings, &self.initial, &moment)
+    }
+
+    fn restore(&mut self, state: &str) -> Result<(), String> {
+        let (settings, moment): (Settings, Moment<()>) = link::read(NAME, state)?;
+        let mut restored = Code::new(settings)?;
+        restored.initial = self.initial.clone();
+        if let Some(p) = &mut restored.player {
+            p.replay(&moment.events, moment.instant);
+        }
+        *self = restored;
+        Ok(())
+    }
+
+    fn seek(&mut self, t: f64) {
+        if let Some(p) = &mut self.player {
+            p.seek_time(t);
+        }
+    }
+
+    fn saved_run(&mut self) -> Option<SavedRun> {
+        let check = self.exercise.check(&self.source, true);
+        let worlds = kinolab_common::display::tidy_report(&check.worlds).ok()?;
+        let shows = vec![
+            ("/passed".to_owned(), serde_json::Value::Bool(check.passed)),
+            ("/worlds".to_owned(), worlds),
+        ];
+        Some(SavedRun {
+            file: FILE.into(),
+            text: self.source.clone(),
+            args: vec![
+                "script".into(),
+                "check".into(),
+                FILE.into(),
+                "--exercise".into(),
+                self.exercise.id.into(),
+            ],
+            shows,
+        })
+    }
+}

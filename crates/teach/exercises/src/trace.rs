@@ -1,0 +1,334 @@
+//! A learner's run, tick by tick, for the stepper: at each call of their
+//! function, where the robot was, what the function was given, what it
+//! answered, and what it printed and plotted. Runs are deterministic, so
+//! the trace is the graded run itself, recorded.
+
+use kinolab_architectures::{Architecture, Arena, ArenaSetup};
+use kinolab_behaviours::run::Runner;
+use kinolab_fields::Field;
+use kinolab_fields::descend::descend;
+use kinolab_script::Output;
+use kinolab_world::World as Place;
+
+use crate::{Exercise, Hook, Outcome, Trial, World};
+
+/// What the stepper draws under the ticks.
+#[derive(Debug, Clone)]
+pub enum Scene {
+    /// The plane round the goal pose, at the origin facing along x.
+    Plane { area: [f64; 4] },
+    /// A world, its obstacles where they are at each tick's time.
+    World(Box<Place>),
+    /// The whole field, the learner's primitive in it, over `area`.
+    Field { field: Box<Field>, area: [f64; 4] },
+    /// The hexapod from above: its centre of mass.
+    Legs { com: [f64; 2] },
+}
+
+/// One call of the learner's function.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tick {
+    /// Simulated time, s (for a walk, the phase).
+    pub t: f64,
+    /// The robot's pose: x, y (m), heading (rad).
+    pub pose: [f64; 3],
+    /// The function's inputs, by name, as text.
+    pub given: Vec<(String, String)>,
+    /// What it answered, as text.
+    pub returned: String,
+    pub output: Output,
+    /// The range rays it saw (robot-frame angle, range), behaviours only.
+    pub rays: Vec<[f64; 2]>,
+    /// The feet (x, y, standing), walks only.
+    pub feet: Vec<[f64; 3]>,
+}
+
+/// A world run with the learner's code, recorded.
+#[derive(Debug, Clone)]
+pub struct Trace {
+    pub scene: Scene,
+    /// Where the robot went, start to end.
+    pub path: Vec<[f64; 2]>,
+    pub ticks: Vec<Tick>,
+    pub outcome: Outcome,
+}
+
+/// The most ticks a trace keeps; longer runs keep every n-th call.
+pub const MAX_TICKS: usize = 4000;
+
+impl Exercise {
+    /// `source` run on `world`, recorded tick by tick.
+    pub fn trace(&self, source: &str, world: &World) -> Trace {
+        let outcome = self.run(source, world);
+        let (scene, path, mut ticks) = match &world.trial {
+            Trial::Control(t) => control(source, t),
+            Trial::Behaviours(t) => behaviours(self.hook, source, t),
+            Trial::Field(t) => field(source, t),
+            Trial::Legs(t) => legs(source, t),
+            Trial::Arena(t) => arena(source, t),
+        };
+        thin(&mut ticks);
+        Trace {
+            scene,
+            path,
+            ticks,
+            outcome,
+        }
+    }
+}
+
+/// Every n-th tick (and the last), at most [`MAX_TICKS`].
+fn thin(ticks: &mut Vec<Tick>) {
+    let n = ticks.len().div_ceil(MAX_TICKS).max(1);
+    if n == 1 {
+        return;
+    }
+    let last = ticks.pop();
+    let kept: Vec<Tick> = ticks.iter().step_by(n).cloned().collect();
+    *ticks = kept;
+    ticks.extend(last);
+}
+
+fn number(x: f64) -> String {
+    kinolab_common::display::fixed(x, 3)
+}
+
+fn given(pairs: &[(&str, String)]) -> Vec<(String, String)> {
+    pairs
+        .iter()
+        .map(|(k, v)| ((*k).to_owned(), v.clone()))
+        .collect()
+}
+
+type Recorded = (Scene, Vec<[f64; 2]>, Vec<Tick>);
+
+fn control(source: &str, t: &crate::control::Trial) -> Recorded {
+    let area = [-2.5, -2.0, 2.5, 2.0];
+    let Ok(spec) = kinolab_control::file::from_json(&crate::control::run_file(source, t)) else {
+        return (Scene::Plane { area }, Vec::new(), Vec::new());
+    };
+    let Ok(run) = spec.run.simulate() else {
+        return (Scene::Plane { area }, Vec::new(), Vec::new());
+    };
+    let pose_at = |time: f64| {
+        let i = run.samples.partition_point(|s| s.t < time - 1e-9);
+        let s = &run.samples[i.min(run.samples.len().saturating_sub(1))];
+        [s.pose.x, s.pose.y, s.pose.theta]
+    };
+    let path = run.samples.iter().map(|s| [s.pose.x, s.pose.y]).collect();
+    let ticks = run
+        .calls
+        .iter()
+        .map(|c| Tick {
+            t: c.t,
+            pose: pose_at(c.t),
+            given: given(&[
+                ("rho", number(c.rho)),
+                ("alpha", number(c.alpha)),
+                ("beta", number(c.beta)),
+            ]),
+            returned: format!("[{}, {}]", number(c.v), number(c.omega)),
+            output: c.output.clone(),
+            rays: Vec::new(),
+            feet: Vec::new(),
+        })
+        .collect();
+    (Scene::Plane { area }, path, ticks)
+}
+
+fn behaviours(hook: Hook, source: &str, t: &crate::behaviours::Trial) -> Recorded {
+    let scene = Scene::World(Box::new(t.world.clone()));
+    let Ok(mut runner) = Runner::new(&crate::behaviours::setup(hook, source, t)) else {
+        return (scene, Vec::new(), Vec::new());
+    };
+    let start = runner.sim.pose;
+    let mut path = vec![[start.x, start.y]];
+    let mut ticks = Vec::new();
+    while !runner.done() {
+        let frame = runner.step();
+        let p = &frame.percepts;
+        path.push([frame.pose.x, frame.pose.y]);
+        let Some(call) = frame.calls.into_iter().next() else {
+            continue;
+        };
+        let goal = p.goal.map_or("()".to_owned(), |g| {
+            format!(
+                "bearing {}, distance {}",
+                number(g.bearing),
+                number(g.distance)
+            )
+        });
+        let nearest = p
+            .rays
+            .iter()
+            .min_by(|a, b| a.range.total_cmp(&b.range))
+            .map_or("no rays".to_owned(), |r| {
+                format!("{} m at {}", number(r.range), number(r.angle))
+            });
+        let [front, left, back, right] = p.bumpers;
+        ticks.push(Tick {
+            t: p.time,
+            pose: [frame.pose.x, frame.pose.y, frame.pose.theta],
+            given: given(&[
+                ("p.t", number(p.time)),
+                ("p.goal", goal),
+                ("nearest ray", nearest),
+                (
+                    "p.bumpers",
+                    format!("front {front}, left {left}, back {back}, right {right}"),
+                ),
+                (
+                    "p.speed",
+                    format!("[{}, {}]", number(p.speed[0]), number(p.speed[1])),
+                ),
+            ]),
+            returned: call.returned,
+            output: call.output,
+            rays: p.rays.iter().map(|r| [r.angle, r.range]).collect(),
+            feet: Vec::new(),
+        });
+    }
+    (scene, path, ticks)
+}
+
+fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
+    let area = [-0.5, -2.5, 7.0, 2.5];
+    let Ok(f) = Field::from_json(&crate::fields::field_file(source, t.base)) else {
+        let empty = Field::new("", None, Vec::new());
+        return (
+            Scene::Field {
+                field: Box::new(empty),
+                area,
+            },
+            Vec::new(),
+            Vec::new(),
+        );
+    };
+    let steps = crate::fields::STEPS;
+    let path: Vec<[f64; 2]> =
+        descend(&f, t.start.into(), steps).map_or_else(|_| Vec::new(), |d| d.path);
+    let mut ticks = Vec::with_capacity(path.len());
+    for (k, p) in path.iter().enumerate() {
+        let Some(mine) = f.custom.first() else { break };
+        let (returned, output) = match mine.answer((*p).into()) {
+            Ok((v, out)) => (format!("[{}, {}]", number(v.x), number(v.y)), out),
+            Err(e) => (format!("stopped: {}", e.message), Output::default()),
+        };
+        ticks.push(Tick {
+            t: k as f64 * steps.step,
+            pose: [p[0], p[1], 0.0],
+            given: given(&[("x", number(p[0])), ("y", number(p[1]))]),
+            returned,
+            output,
+            rays: Vec::new(),
+            feet: Vec::new(),
+        });
+    }
+    (
+        Scene::Field {
+            field: Box::new(f),
+            area,
+        },
+        path,
+        ticks,
+    )
+}
+
+fn legs(source: &str, t: &crate::legs::Trial) -> Recorded {
+    let scene = Scene::Legs { com: t.com };
+    let Ok(walker) = crate::legs::walker(source, t) else {
+        return (scene, Vec::new(), Vec::new());
+    };
+    let names = kinolab_locomotion::walker::LEGS;
+    let mut ticks = Vec::new();
+    for k in 0..=t.samples {
+        let tau = k as f64 / t.samples as f64;
+        let Ok(plan) = walker.plan_told(tau) else {
+            break;
+        };
+        let answers: Vec<String> = plan
+            .iter()
+            .zip(names)
+            .map(|(((down, at), _), leg)| {
+                let how = if *down { "stands" } else { "lifts" };
+                format!(
+                    "{leg} {how} at [{}, {}, {}]",
+                    number(at.x),
+                    number(at.y),
+                    number(at.z)
+                )
+            })
+            .collect();
+        let mut output = Output::default();
+        for (_, out) in &plan {
+            output.prints.extend(out.prints.iter().cloned());
+            output.plots.extend(out.plots.iter().cloned());
+        }
+        ticks.push(Tick {
+            t: tau,
+            pose: [0.0, 0.0, 0.0],
+            given: given(&[
+                ("phase", number(tau)),
+                ("leg", "each of the six in turn".into()),
+            ]),
+            returned: answers.join("; "),
+            output,
+            rays: Vec::new(),
+            feet: plan
+                .iter()
+                .map(|((down, at), _)| [at.x, at.y, f64::from(u8::from(*down))])
+                .collect(),
+        });
+    }
+    (scene, Vec::new(), ticks)
+}
+
+fn arena(source: &str, t: &crate::architecture::Trial) -> Recorded {
+    let setup = ArenaSetup {
+        sequencer: Some(source.to_owned()),
+        ..t.setup.clone()
+    };
+    let Ok(mut arena) = Arena::new(&setup, &[Architecture::Hybrid]) else {
+        return (
+            Scene::World(Box::new(t.setup.world.clone())),
+            Vec::new(),
+            Vec::new(),
+        );
+    };
+    let scene = Scene::World(Box::new(arena.entrants[0].sim.world.clone()));
+    let start = arena.entrants[0].sim.pose;
+    let mut path = vec![[start.x, start.y]];
+    let mut ticks = Vec::new();
+    while !arena.done() {
+        arena.step();
+        let e = &arena.entrants[0];
+        let pose = e.sim.pose;
+        path.push([pose.x, pose.y]);
+        let Some(asked) = e.controller.asked() else {
+            continue;
+        };
+        if ticks
+            .last()
+            .is_some_and(|last: &Tick| last.t >= e.sim.time - 1e-9)
+        {
+            continue;
+        }
+        ticks.push(Tick {
+            t: e.sim.time,
+            pose: [pose.x, pose.y, pose.theta],
+            given: asked
+                .given
+                .iter()
+                .map(|(k, v)| (format!("state.{k}"), v.clone()))
+                .collect(),
+            returned: asked.returned.clone(),
+            output: asked.output.clone(),
+            rays: Vec::new(),
+            feet: Vec::new(),
+        });
+        if e.controller.failed().is_some() {
+            break;
+        }
+    }
+    (scene, path, ticks)
+}
