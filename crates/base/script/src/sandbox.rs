@@ -79,6 +79,7 @@ pub(crate) fn engine(sink: &Sink, budget: &Rc<Budget>) -> Engine {
         .set_max_variables(1_000)
         .set_max_functions(200);
     same_maths(&mut e);
+    joins_text(&mut e);
     let counted = budget.clone();
     e.on_progress(move |ops| {
         counted.used.set(ops);
@@ -135,6 +136,22 @@ pub(crate) fn locating(sink: &Sink, trail: &Trail) -> Engine {
         },
     );
     e
+}
+
+/// `"rho " + rho` and `rho + " m"`: text joined with a number or a truth
+/// value, written as the value prints, as in `print` and `${…}`.
+fn joins_text(e: &mut Engine) {
+    use rhai::ImmutableString as Text;
+    fn join(a: impl std::fmt::Display, b: impl std::fmt::Display) -> Text {
+        format!("{a}{b}").into()
+    }
+    let shown = |x: f64| rhai::Dynamic::from_float(x);
+    e.register_fn("+", move |s: Text, x: f64| join(s, shown(x)))
+        .register_fn("+", move |x: f64, s: Text| join(shown(x), s))
+        .register_fn("+", |s: Text, x: i64| join(s, x))
+        .register_fn("+", |x: i64, s: Text| join(x, s))
+        .register_fn("+", |s: Text, x: bool| join(s, x))
+        .register_fn("+", |x: bool, s: Text| join(x, s));
 }
 
 /// Trigonometry and the other transcendental functions from the lab's

@@ -196,6 +196,20 @@ fn print_and_plot_are_kept_per_call() {
 }
 
 #[test]
+fn text_joins_numbers_as_interpolation_writes_them() {
+    let mut s = compile(
+        "fn control(rho, alpha, beta) {\n  print(\"rho \" + rho + \", step \" + 3 + \", near \" + (rho < 1.0));\n  print(rho + \" m\");\n  let s = \"a\"; s += 2.5; print(s);\n  [rho, 0.0]\n}",
+    );
+    let out = s
+        .call(vec![number(2.0), number(0.0), number(0.0)], 0.0)
+        .unwrap();
+    assert_eq!(
+        out.output.prints,
+        vec!["rho 2.0, step 3, near false", "2.0 m", "a2.5"]
+    );
+}
+
+#[test]
 fn trigonometry_is_the_cores_bit_for_bit() {
     let f = Signature {
         name: "f",

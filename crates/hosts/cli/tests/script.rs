@@ -264,3 +264,48 @@ fn a_run_file_may_name_its_script_by_path() {
     );
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// A lesson file's address part: its name without the number and `.md`.
+fn address_part(name: &str) -> &str {
+    let name = name.strip_suffix(".md").unwrap_or(name);
+    name.split_once('-')
+        .filter(|(n, _)| n.chars().all(|c| c.is_ascii_digit()))
+        .map_or(name, |(_, rest)| rest)
+}
+
+#[test]
+fn every_exercise_sits_in_the_lesson_it_names() {
+    let dir = folder("lessons");
+    let (_, out, _) = kinolab(&["script", "exercises"], &dir);
+    let exercises: Vec<Value> = serde_json::from_str(&out).unwrap();
+    let _ = std::fs::remove_dir_all(dir);
+    let lessons = kinolab_fuzz::seeds::workspace().join("lessons");
+    let mut found = std::collections::BTreeMap::new();
+    for unit in std::fs::read_dir(&lessons).unwrap().flatten() {
+        let Ok(files) = std::fs::read_dir(unit.path()) else {
+            continue;
+        };
+        let unit_name = unit.file_name().to_string_lossy().into_owned();
+        for file in files.flatten() {
+            let name = file.file_name().to_string_lossy().into_owned();
+            let text = std::fs::read_to_string(file.path()).unwrap();
+            let address = format!("{}/{}", address_part(&unit_name), address_part(&name));
+            for block in text.split("```exercise\n").skip(1) {
+                let id = block.lines().next().unwrap().trim().to_owned();
+                assert!(
+                    found.insert(id.clone(), address.clone()).is_none(),
+                    "{id} twice"
+                );
+            }
+        }
+    }
+    assert_eq!(found.len(), exercises.len(), "{found:?}");
+    for e in &exercises {
+        let id = e["id"].as_str().unwrap();
+        assert_eq!(
+            found.get(id),
+            Some(&e["lesson"].as_str().unwrap().to_owned()),
+            "{id}"
+        );
+    }
+}

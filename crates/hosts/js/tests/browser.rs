@@ -284,3 +284,63 @@ fn the_glue_returns_the_api_report_unchanged() {
         ),
     );
 }
+
+/// Hostile code in the page: each stops its own run with a message that
+/// names what and where, and the page goes on to grade the next script.
+#[wasm_bindgen_test]
+fn hostile_scripts_stop_in_the_browser_and_the_page_goes_on() {
+    let cases = [
+        ("fn control(rho, alpha, beta) {\n loop { }\n}", "endless", 2),
+        (
+            "fn deeper(n) {\n deeper(n + 1)\n}\nfn control(rho, alpha, beta) { deeper(0) }",
+            "too_deep",
+            2,
+        ),
+        (
+            "fn control(rho, alpha, beta) {\n let a = [];\n a.pad(100000000, 0);\n [0.0, 0.0]\n}",
+            "too_large",
+            3,
+        ),
+        (
+            "fn control(rho, alpha, beta) {\n let s = \"x\";\n loop { s += s; }\n}",
+            "too_large",
+            3,
+        ),
+        (
+            "fn control(rho, alpha, beta) {\n #{ v: 1.0 }\n}",
+            "shape",
+            2,
+        ),
+        (
+            "fn control(rho, alpha, beta) {\n [0.0 / 0.0, 1.0]\n}",
+            "not_finite",
+            2,
+        ),
+    ];
+    for (source, kind, line) in cases {
+        let report =
+            kinolab_js::check_script("control-park".into(), source.into(), Some(false)).unwrap();
+        assert_eq!(get(&report, "passed").as_bool(), Some(false), "{source}");
+        let error = get(&report, "error");
+        assert_eq!(
+            get(&error, "kind").as_string().as_deref(),
+            Some(kind),
+            "{source}"
+        );
+        assert_eq!(
+            get(&error, "line").as_f64(),
+            Some(f64::from(line)),
+            "{source}"
+        );
+        assert!(
+            get(&error, "message")
+                .as_string()
+                .unwrap()
+                .contains("t = 0.00 s")
+        );
+    }
+    // The page is still alive: the model law passes every world.
+    let model = "fn control(rho, alpha, beta) { [3.0 * rho, 8.0 * alpha - 1.5 * beta] }";
+    let report = kinolab_js::check_script("control-park".into(), model.into(), Some(true)).unwrap();
+    assert_eq!(get(&report, "passed").as_bool(), Some(true));
+}

@@ -471,3 +471,36 @@ fn a_sorting_quiz_marks_each_item() {
     assert_eq!(h.get_all_by_label("belongs in software design:").count(), 2);
     assert!(!h.state().progress().quizzes[&format!("{lesson}#0")].correct);
 }
+
+#[test]
+fn a_learners_code_survives_leaving_the_lesson_and_the_lab() {
+    let lesson = "#/motion-control/programming-the-robot";
+    let mine = "fn control(rho, alpha, beta) { [1.5 * rho, 4.0 * alpha] }";
+    let mut h = animated(KinolabApp::new(None, lesson));
+    h.run_steps(4);
+    let editor = h.get_by_label("Your code");
+    editor.focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.key_press(egui::Key::Delete);
+    h.get_by_label("Your code").type_text(mine);
+    h.run_steps(2);
+    let _ = h.state_mut().take_state_hash();
+    let kept = |h: &Harness<'static, KinolabApp>| {
+        h.get_by_label("Your code")
+            .accesskit_node()
+            .value()
+            .unwrap_or_default()
+    };
+    // Away to another lesson and back: the code is where it was.
+    h.state_mut().follow_hash(&format!("#/{LESSON}"));
+    h.run_steps(2);
+    h.state_mut().follow_hash(lesson);
+    h.run_steps(4);
+    assert_eq!(kept(&h), mine);
+    // And in a new session from the saved progress.
+    let saved = h.state().progress_json();
+    let mut h = animated(KinolabApp::new(Some(&saved), lesson));
+    h.run_steps(4);
+    assert_eq!(kept(&h), mine);
+}

@@ -31,7 +31,7 @@ pub const EXERCISES: [Exercise; 2] = [
     Exercise {
         id: "control-park",
         unit: "motion-control",
-        lesson: "motion-control/feedback-and-polar-coordinates",
+        lesson: "motion-control/programming-the-robot",
         hook: Hook::Control,
         signature: kinolab_control::law::SIGNATURE,
         title: "Park at the goal",

@@ -129,7 +129,7 @@ pub fn field_minima() -> f64 {
 }
 
 /// A 20 × 20 m room with 50 obstacles: discs, boxes and walls.
-fn cluttered() -> World {
+pub(crate) fn cluttered() -> World {
     let mut world = World::empty("cluttered", Rect::from([0.0, 0.0, 20.0, 20.0]));
     world.start = Pose::new(1.0, 1.0, 0.8);
     world.goal = Some(Vec2::new(19.0, 19.0));
@@ -160,7 +160,7 @@ fn cluttered() -> World {
     world
 }
 
-fn setup(world: World) -> Setup {
+pub(crate) fn setup(world: World) -> Setup {
     let behaviours = vec![
         Named::new(
             "go",

@@ -13,8 +13,10 @@ pub mod behaviour;
 pub mod components;
 pub mod design;
 pub mod mechanism;
+pub mod player;
 #[cfg(all(feature = "compare-k", not(target_arch = "wasm32")))]
 pub mod reference;
+pub mod script;
 
 /// A named unit of work.
 #[derive(Debug, Clone, Copy)]
@@ -323,6 +325,34 @@ pub const KERNELS: &[Kernel] = &[
     Kernel {
         name: "architecture_arena_frame_3_robots",
         run: architecture::arena_frame,
+    },
+    Kernel {
+        name: "script_law_run_10s_100hz",
+        run: script::law_run_script,
+    },
+    Kernel {
+        name: "builtin_law_run_10s_100hz",
+        run: script::law_run_builtin,
+    },
+    Kernel {
+        name: "script_compile_100_lines",
+        run: script::compile_100_lines,
+    },
+    Kernel {
+        name: "script_behaviour_step_16_rays",
+        run: script::behaviour_step,
+    },
+    Kernel {
+        name: "player_scrub_back_60s_behaviour_arena",
+        run: player::scrub_behaviour_arena,
+    },
+    Kernel {
+        name: "player_scrub_back_60s_architecture_arena",
+        run: player::scrub_architecture_arena,
+    },
+    Kernel {
+        name: "player_frame_overhead",
+        run: player::player_frame,
     },
     Kernel {
         name: "arena_frame_100_robots",

@@ -102,6 +102,9 @@ pub(super) fn editor(ui: &mut egui::Ui, code: &mut String, error: Option<&Script
     egui::ScrollArea::both()
         .id_salt("code-editor")
         .max_height(360.0)
+        // Inside a lesson's own scrolling the editor would otherwise shrink
+        // to a few lines: keep room for a short function at a glance.
+        .min_scrolled_height(240.0)
         .show(ui, |ui| {
             ui.horizontal_top(|ui| {
                 ui.spacing_mut().item_spacing.x = 6.0;

@@ -278,16 +278,11 @@ fn panel(ui: &mut egui::Ui, state: &Stepping) {
     };
     let mono = |t: &str| RichText::new(t).monospace().size(theme::CODE_SIZE - 1.0);
     ui.label(RichText::new("Your function was given").strong());
-    egui::Grid::new("code-given")
-        .num_columns(2)
-        .striped(true)
-        .show(ui, |ui| {
-            for (name, value) in &k.given {
-                ui.label(mono(name));
-                ui.label(mono(value));
-                ui.end_row();
-            }
-        });
+    // One wrapping line per input: a long value (a ray, a goal) stays
+    // within a phone's width.
+    for (name, value) in &k.given {
+        ui.add(egui::Label::new(mono(&format!("{name} = {value}"))).wrap());
+    }
     ui.add_space(4.0);
     ui.label(RichText::new("and answered").strong());
     ui.add(egui::Label::new(mono(&k.returned)).wrap());
