@@ -79,15 +79,26 @@ pub fn write<T: Serialize + PartialEq, E: Serialize>(
     if settings == initial && moment.instant == 0.0 && moment.events.is_empty() {
         return None;
     }
+    let params = kinolab_schema::settings::to_params(widget, settings).ok()?;
+    let events = match moment.events.is_empty() {
+        true => None,
+        false => Some(serde_json::to_string(&moment.events).ok()?),
+    };
+    write_lines(&params, moment.instant, events.as_deref())
+}
+
+/// The part of [`write`] that does not depend on the widget's types (kept
+/// out of the generic function so the lab's wasm holds it once).
+fn write_lines(params: &[(String, String)], instant: f64, events: Option<&str>) -> Option<String> {
     let mut lines = String::new();
-    for (key, value) in kinolab_schema::settings::to_params(widget, settings).ok()? {
+    for (key, value) in params {
         lines += &format!("{key}: {value}\n");
     }
-    if moment.instant != 0.0 {
-        lines += &format!("@t: {}\n", moment.instant);
+    if instant != 0.0 {
+        lines += &format!("@t: {instant}\n");
     }
-    if !moment.events.is_empty() {
-        lines += &format!("@events: {}\n", serde_json::to_string(&moment.events).ok()?);
+    if let Some(events) = events {
+        lines += &format!("@events: {events}\n");
     }
     if lines.is_empty() {
         // Every setting at the schema's default: say so, since a link with
@@ -105,6 +116,22 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
     widget: &str,
     text: &str,
 ) -> Result<(T, Moment<E>), String> {
+    let (params, instant, events) = read_lines(widget, text)?;
+    let events = match events {
+        Some(json) => {
+            serde_json::from_str(&json).map_err(|_| "its events are damaged".to_owned())?
+        }
+        None => Vec::new(),
+    };
+    Ok((params.settings()?, Moment { instant, events }))
+}
+
+/// The part of [`read`] that does not depend on the widget's types: the
+/// checked parameters, the instant, and the events as JSON text.
+fn read_lines(
+    widget: &str,
+    text: &str,
+) -> Result<(kinolab_schema::Params, f64, Option<String>), String> {
     if text.len() > MAX_LEN {
         return Err(format!("it is longer than {MAX_LEN} characters"));
     }
@@ -119,17 +146,14 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
         return Err("it is empty (cut short)".into());
     }
     let mut params = Vec::new();
-    let mut moment = Moment::default();
+    let (mut instant_at, mut events) = (0.0, None);
     for line in lines.lines() {
         let (key, value) = line
             .split_once(": ")
             .ok_or_else(|| format!("`{line}` is not a setting"))?;
         match key {
-            "@t" => moment.instant = instant(value)?,
-            "@events" => {
-                moment.events =
-                    serde_json::from_str(value).map_err(|_| "its events are damaged".to_owned())?;
-            }
+            "@t" => instant_at = instant(value)?,
+            "@events" => events = Some(value.to_owned()),
             _ => params.push((key.to_owned(), value.to_owned())),
         }
     }
@@ -138,8 +162,7 @@ pub fn read<T: DeserializeOwned, E: DeserializeOwned>(
         params,
         line: 0,
     };
-    let settings = kinolab_schema::validate(&spec)?.settings()?;
-    Ok((settings, moment))
+    Ok((kinolab_schema::validate(&spec)?, instant_at, events))
 }
 
 /// Whether `text` is a settings link with nothing in it: a link cut

@@ -18,12 +18,22 @@ use crate::{Params, Value};
 impl Params {
     /// The settings struct `T`, every field from this widget's parameters.
     pub fn settings<T: DeserializeOwned>(&self) -> Result<T, String> {
+        serde_json::from_value(self.object()).map_err(|e| self.misfit(&e))
+    }
+
+    /// Every parameter as one JSON object (the part of [`Params::settings`]
+    /// that does not depend on the struct, kept out of its generic body so
+    /// the lab's wasm holds it once rather than once per widget).
+    fn object(&self) -> Json {
         let mut object = Map::new();
         for (name, value) in self.values() {
             object.insert(name.to_owned(), json(value));
         }
-        serde_json::from_value(Json::Object(object))
-            .map_err(|e| format!("widget `{}`: settings do not fit: {e}", self.widget))
+        Json::Object(object)
+    }
+
+    fn misfit(&self, e: &serde_json::Error) -> String {
+        format!("widget `{}`: settings do not fit: {e}", self.widget)
     }
 }
 
@@ -54,13 +64,20 @@ pub fn to_params<T: Serialize>(
     widget: &str,
     settings: &T,
 ) -> Result<Vec<(String, String)>, String> {
+    let fields = serde_json::to_value(settings).map_err(|e| e.to_string())?;
+    value_to_params(widget, fields)
+}
+
+/// [`to_params`] once the settings are JSON (not generic, so it is compiled
+/// once for every widget).
+fn value_to_params(widget: &str, fields: Json) -> Result<Vec<(String, String)>, String> {
     let schema = crate::find(widget).ok_or_else(|| format!("no widget `{widget}`"))?;
     let defaults = crate::validate(&kinolab_lessons::WidgetSpec {
         name: widget.to_owned(),
         params: Vec::new(),
         line: 0,
     })?;
-    let Json::Object(fields) = serde_json::to_value(settings).map_err(|e| e.to_string())? else {
+    let Json::Object(fields) = fields else {
         return Err("settings must be a struct".into());
     };
     let mut out = Vec::with_capacity(fields.len());

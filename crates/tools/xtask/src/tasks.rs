@@ -45,6 +45,7 @@ fn js_package(release: bool) -> Result {
                 "--enable-nontrapping-float-to-int",
                 "--enable-sign-ext",
                 "--enable-mutable-globals",
+                "--enable-simd",
                 wasm,
                 "-o",
                 wasm,

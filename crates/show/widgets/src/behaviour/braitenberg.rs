@@ -136,7 +136,8 @@ impl Settings {
         setup.seed = SEED;
         setup.stop_at_goal = false;
         setup.script = script;
-        Setup::from_json(&setup.to_json()).map_err(|e| e.to_string())
+        setup.check().map_err(|e| e.to_string())?;
+        Ok(setup)
     }
 }
 

@@ -142,7 +142,7 @@ impl Settings {
         setup.seed = self.seed;
         setup.stop_at_goal = setup.world.goal.is_some();
         setup.check().map_err(|e| e.to_string())?;
-        Setup::from_json(&setup.to_json()).map_err(|e| e.to_string())
+        Ok(setup)
     }
 }
 
