@@ -158,12 +158,32 @@ try {
     await embed.screenshot({ path: `${out}/embed.png`, fullPage: true });
   });
 
-  // A phone: every lesson must fit the screen's width (the app reports how
-  // far right its content reaches), with touch input and no console errors.
+  // A phone and two desktop windows: the lessons with the widest widgets
+  // must fit the window (the app reports how far right its content reaches
+  // and the screen's edge); the phone with touch input and no console
+  // errors. (A UI test checks every page at these widths.)
+  const wide = ["wheeled-locomotion/icr-and-holonomy", "motion-control/feedback-and-polar-coordinates",
+    "legged-locomotion/gaits", "legged-locomotion/central-pattern-generators",
+    "software-stability/analysis-patterns", "component-patterns/dynamic-wiring"];
+  for (const width of [1024, 1280]) {
+    const desk = await (await browser.newContext({ viewport: { width, height: 800 } })).newPage();
+    watch(desk, `${width} px`);
+    for (const lesson of wide) {
+      await check(`${lesson} fits a ${width} px wide window`, async () => {
+        await desk.goto(`${server.url}#/${lesson}`);
+        await waitForPage(desk, lesson);
+        await desk.waitForTimeout(300);
+        const [right, edge] = (await desk.evaluate(() => document.documentElement.dataset.kinolabExtent)).split(" ").map(Number);
+        assert.ok(edge > 500 && edge <= width, `screen ${edge}`);
+        assert.ok(right <= edge + 0.5, `content reaches ${right} on a ${edge} wide screen`);
+      });
+    }
+    await desk.close();
+  }
   const phone = await browser.newContext({ viewport: { width: 412, height: 915 }, hasTouch: true, isMobile: true });
   const small = await phone.newPage();
   watch(small, "phone");
-  for (const lesson of ["wheeled-locomotion/icr-and-holonomy", "motion-control/feedback-and-polar-coordinates", "legged-locomotion/gaits"]) {
+  for (const lesson of wide) {
     await check(`${lesson} fits a 412 px wide phone`, async () => {
       await small.goto(`${server.url}#/${lesson}`);
       await waitForPage(small, lesson);

@@ -83,7 +83,7 @@ pub fn largest_push(table: &crate::balance::CartTable, push: f64) -> Result<Feed
         ))
     } else {
         Feedback::met(format!(
-            "Solved: {push:.3} m/s is caught, and the limit is ω · toe = {:.3} m/s. Beyond it the capture point lies past the toe.",
+            "{push:.3} m/s is caught, and the limit is ω · toe = {:.3} m/s. Beyond it the capture point lies past the toe.",
             limit
         ))
     })
@@ -97,7 +97,7 @@ pub fn lock_trot(net: &crate::network::Network) -> Feedback {
         return Feedback::not_yet(e.to_string());
     }
     if net.phases.len() != 4 {
-        return Feedback::not_yet("the trot needs four legs");
+        return Feedback::not_yet("The trot needs four legs.");
     }
     let trot = [0.0, 0.5, 0.5, 0.0];
     let duration = 20.0 / net.frequency.max(0.2);
@@ -128,9 +128,7 @@ pub fn lock_trot(net: &crate::network::Network) -> Feedback {
             ));
         }
     }
-    Feedback::met(
-        "Solved: from every start the diagonal pairs lock together, half a cycle apart: a trot.",
-    )
+    Feedback::met("From every start the diagonal pairs lock together, half a cycle apart: a trot.")
 }
 
 /// Grid steps per cycle the phase search tries for each leg.

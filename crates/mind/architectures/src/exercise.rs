@@ -47,7 +47,12 @@ pub fn survive_the_person(planning_cost_ms: f64) -> Result<Feedback, FieldError>
             "At {planning_cost_ms} ms a cell the plans stay fresh enough: the hierarchical robot reaches the goal without touching the walker."
         )),
         (_, n) if n > 0 => Feedback::not_yet(format!(
-            "At {planning_cost_ms} ms a cell the robot touched something {n} time(s): it drives plans made from sensing that is seconds old while the walker moves."
+            "At {planning_cost_ms} ms a cell the robot touched something {}: it drives plans made from sensing that is seconds old while the walker moves.",
+            if n == 1 {
+                "once".to_owned()
+            } else {
+                format!("{n} times")
+            }
         )),
         _ => Feedback::not_yet("No collision, but the robot did not reach the goal in time."),
     })

@@ -167,10 +167,12 @@ fn answer_controls(
                 ui.horizontal_wrapped(|ui| {
                     for (b, bin) in bins.iter().enumerate() {
                         let on = state.sorted[i] == Some(b);
-                        if ui
-                            .selectable_label(on, RichText::new(bin).size(theme::BODY_SIZE))
-                            .clicked()
-                        {
+                        // A framed button even at rest: a bin is a choice
+                        // to press, not a word in the text.
+                        let button =
+                            egui::Button::selectable(on, RichText::new(bin).size(theme::BODY_SIZE))
+                                .frame_when_inactive(true);
+                        if ui.add(button).clicked() {
                             state.sorted[i] = Some(b);
                             state.verdict = None;
                         }
@@ -207,7 +209,10 @@ fn sort_feedback(ui: &mut egui::Ui, quiz: &Quiz, state: &QuizState, navigate: &m
     let Ok(marks) = quiz.sort_marks(&Answer::Sort(picks)) else {
         return;
     };
-    for ((item, right), _) in items.iter().zip(marks).zip(0..) {
+    // The verdict and the item on one line, the reason under them across
+    // the column's whole width (beside them it would get only what is
+    // left of the line, and break inside its words).
+    for (i, (item, right)) in items.iter().zip(marks).enumerate() {
         ui.horizontal_wrapped(|ui| {
             let (text, color) = if right {
                 ("right:".to_owned(), theme::good_color(ui))
@@ -219,11 +224,13 @@ fn sort_feedback(ui: &mut egui::Ui, quiz: &Quiz, state: &QuizState, navigate: &m
             };
             ui.label(RichText::new(text).color(color).size(theme::BODY_SIZE));
             inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
-            if let Some(why) = &item.why {
-                ui.label(RichText::new("·").size(theme::BODY_SIZE));
-                inline_ui(ui, why, theme::BODY_SIZE, false, navigate);
-            }
         });
+        if let Some(why) = &item.why {
+            ui.indent(("sort-why", i), |ui| {
+                inline_ui(ui, why, theme::BODY_SIZE, false, navigate);
+            });
+        }
+        ui.add_space(4.0);
     }
 }
 

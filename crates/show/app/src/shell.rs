@@ -50,7 +50,7 @@ pub struct KinolabApp {
     /// Frames that drew the lab's content.
     frames_drawn: u64,
     /// How far right the page's content reached on the last frame, and the
-    /// screen's width, in points: content past the screen is cut off.
+    /// screen's right edge (see [`KinolabApp::extent`]).
     extent: (f32, f32),
     /// The device has a touch screen: a finger drag scrolls the page from
     /// the first touch on (egui learns of touch only from touch events,
@@ -325,9 +325,10 @@ impl KinolabApp {
         }
     }
 
-    /// How far right the page's content reached on the last frame and the
-    /// screen's width, in points; content past the screen's edge is a
-    /// layout bug (the end-to-end test checks it on a phone-sized screen).
+    /// How far right the page's content reached on the last frame, and the
+    /// screen's right edge, in points: content past the screen is cut off,
+    /// a layout bug (a UI test checks every page at 360, 1024 and 1280 px,
+    /// the end-to-end test the widest lessons at 412, 1024 and 1280 px).
     pub fn extent(&self) -> (f32, f32) {
         self.extent
     }

@@ -174,33 +174,74 @@ fn every_lesson_renders_without_widget_errors() {
     }
 }
 
-/// The narrowest phone the lab supports, in points.
-const PHONE_WIDTH: f32 = 360.0;
+/// The narrowest phone the lab supports, a small laptop and a desktop
+/// window, in points.
+const WIDTHS: [f32; 3] = [360.0, 1024.0, 1280.0];
 
 #[test]
-fn every_lesson_fits_a_phone_screen() {
-    let app = KinolabApp::new(None, "");
-    let addresses = app.course().unwrap().addresses();
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(PHONE_WIDTH, 16000.0))
-        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+fn every_page_fits_the_window_on_a_phone_and_a_desktop() {
     let mut too_wide = Vec::new();
-    let widgets = kinolab_schema::widgets().map(|w| format!("gallery/{}", w.name));
-    let pages = widgets.chain(addresses);
-    for address in pages {
-        h.state_mut().follow_hash(&format!("#/{address}"));
-        h.run_steps(6);
-        let (right, screen) = h.state().extent();
-        assert!(screen > 0.0 && right > 0.0, "{address}: nothing measured");
-        if right > screen + 0.5 {
-            too_wide.push(format!("{address}: {right:.0} > {screen:.0}"));
+    for width in WIDTHS {
+        let app = KinolabApp::new(None, "");
+        let addresses = app.course().unwrap().addresses();
+        let mut h = Harness::builder()
+            .with_size(egui::vec2(width, 16000.0))
+            .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+        let widgets = kinolab_schema::widgets().map(|w| format!("gallery/{}", w.name));
+        for address in widgets.chain(addresses) {
+            h.state_mut().follow_hash(&format!("#/{address}"));
+            h.run_steps(6);
+            let (right, edge) = h.state().extent();
+            assert!(edge > 0.0 && right > 0.0, "{address}: nothing measured");
+            assert!(edge <= width + 0.5, "{address}: a screen of {edge}");
+            if right > edge + 0.5 {
+                too_wide.push(format!("{width} px, {address}: {right:.0} > {edge:.0}"));
+            }
         }
     }
     assert!(
         too_wide.is_empty(),
-        "wider than the screen:\n{}",
+        "wider than the window:\n{}",
         too_wide.join("\n")
     );
+}
+
+/// What a widget's task says when it is solved (the feedback's first word).
+const SOLVED: &str = "Solved";
+
+#[test]
+fn no_task_in_a_lesson_is_solved_before_the_learner_changes_anything() {
+    let app = KinolabApp::new(None, "");
+    let addresses = app.course().unwrap().addresses();
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1024.0, 16000.0))
+        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let mut solved = Vec::new();
+    let mut tasks = 0;
+    for address in addresses {
+        h.state_mut().follow_hash(&format!("#/{address}"));
+        h.run_steps(4);
+        // A task's Check button (a quiz's is "Check answer").
+        let task_check = |n: &egui_kittest::Node<'_>| {
+            n.accesskit_node()
+                .label()
+                .is_some_and(|l| l.starts_with("Check") && l != "Check answer")
+        };
+        let by_button = || egui_kittest::kittest::by().role(egui::accesskit::Role::Button);
+        let checks = h.query_all(by_button()).filter(task_check).count();
+        for i in 0..checks {
+            tasks += 1;
+            if let Some(button) = h.query_all(by_button()).filter(task_check).nth(i) {
+                button.click();
+            }
+            h.run_steps(3);
+        }
+        if h.query_by_label_contains(SOLVED).is_some() {
+            solved.push(address);
+        }
+    }
+    assert!(tasks >= 10, "only {tasks} tasks were found");
+    assert!(solved.is_empty(), "solved untouched: {solved:?}");
 }
 
 #[test]

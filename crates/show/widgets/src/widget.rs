@@ -173,8 +173,23 @@ pub fn feedback_ui(ui: &mut egui::Ui, feedback: Option<&Feedback>) {
         } else {
             theme::error_color(ui)
         };
-        let prefix = if f.met { "Solved. " } else { "" };
-        ui.label(RichText::new(format!("{prefix}{}", f.message)).color(color));
+        ui.label(RichText::new(feedback_text(f)).color(color));
+    }
+}
+
+/// A feedback as one sentence or more: "Solved. " before a met goal's
+/// message, the message's first letter a capital.
+pub fn feedback_text(f: &Feedback) -> String {
+    let message = f.message.trim();
+    let mut chars = message.chars();
+    let sentence = match chars.next() {
+        Some(first) => first.to_uppercase().chain(chars).collect(),
+        None => String::new(),
+    };
+    if f.met {
+        format!("Solved. {sentence}")
+    } else {
+        sentence
     }
 }
 
@@ -218,6 +233,28 @@ pub fn control_row<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -
     } else {
         ui.horizontal_wrapped(add).inner
     }
+}
+
+/// `count` like controls (one slider per leg, say) in as many columns of
+/// about `cell` points as the column has room for, row after row; one
+/// under the other on a narrow column. ([`control_row`] cannot wrap them:
+/// egui gives each slider the rest of the row.)
+pub fn control_grid(
+    ui: &mut egui::Ui,
+    id: &str,
+    count: usize,
+    cell: f32,
+    mut add: impl FnMut(&mut egui::Ui, usize),
+) {
+    let columns = ((ui.available_width() / cell.max(1.0)) as usize).clamp(1, count.max(1));
+    egui::Grid::new(id).num_columns(columns).show(ui, |ui| {
+        for i in 0..count {
+            add(ui, i);
+            if (i + 1) % columns == 0 {
+                ui.end_row();
+            }
+        }
+    });
 }
 
 /// Content that cannot get narrower (a grid of numbers, a wide formula)
@@ -266,5 +303,19 @@ pub fn triple(p: &Params, name: &str) -> [f64; 3] {
     match p.numbers(name) {
         Some([a, b, c]) => [*a, *b, *c],
         _ => [0.0; 3],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn feedback_reads_as_sentences_with_solved_said_once() {
+        let met = Feedback::met("the omni reached the goal.");
+        assert_eq!(feedback_text(&met), "Solved. The omni reached the goal.");
+        let not_yet = Feedback::not_yet("ändern: one slot");
+        assert_eq!(feedback_text(&not_yet), "Ändern: one slot");
+        assert_eq!(feedback_text(&Feedback::not_yet("  ")), "");
     }
 }

@@ -218,7 +218,7 @@ fn the_trot_exercise_wants_the_trots_offsets() {
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
-    h.get_by_label_contains("Solved: from every start");
+    h.get_by_label_contains("Solved. From every start");
 }
 
 #[test]
@@ -278,18 +278,18 @@ fn the_car_is_fixed_by_its_body_not_its_behaviours() {
     h.get_by_label_contains("Did not reach the goal: a car cannot turn tighter");
     h.get_by_label("Check").click();
     h.run_steps(2);
-    h.get_by_label_contains("change exactly one slot (you changed 0)");
+    h.get_by_label_contains("Change exactly one slot (you changed 0)");
     h.get_by_label("wander-when-stuck").click();
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
-    h.get_by_label_contains("still no: a car cannot turn tighter");
+    h.get_by_label_contains("Still no: a car cannot turn tighter");
     h.get_by_label("go-and-avoid").click();
     h.get_by_label("omni").click();
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
-    h.get_by_label_contains("Solved. the omni with go-and-avoid reached the goal");
+    h.get_by_label_contains("Solved. The omni with go-and-avoid reached the goal");
 }
 
 #[test]
@@ -309,7 +309,7 @@ fn a_giant_walks_straight_across_the_beach() {
     h.run_steps(2);
     h.get_by_label("Check").click();
     h.run_steps(2);
-    h.get_by_label_contains("Solved. at size 90 the path is 1.000 times the straight line");
+    h.get_by_label_contains("Solved. At size 90 the path is 1.000 times the straight line");
 }
 
 #[test]

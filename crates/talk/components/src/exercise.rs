@@ -42,7 +42,7 @@ pub fn wire_robot(connections: &[(String, String)]) -> Feedback {
     };
     if let Some(t) = reached(&report) {
         return Feedback::met(format!(
-            "the robot reached the goal at {t:.1} s, {} messages after the start",
+            "The robot reached the goal at {t:.1} s, {} messages after the start.",
             report.counts.messages
         ));
     }
@@ -478,7 +478,7 @@ pub fn which_pattern(choices: &[(&str, &str)]) -> Feedback {
         }
     }
     if wrong.is_empty() {
-        Feedback::met("every requirement works with the pattern you chose")
+        Feedback::met("Every requirement works with the pattern you chose.")
     } else {
         Feedback::not_yet(format!(
             "{} of 5 do not work yet. {}",

@@ -15,14 +15,14 @@ pub fn nearly_straight(seed: u64, size: f64) -> Feedback {
     match walk(&beach, size) {
         Err(e) => Feedback::not_yet(e.to_string()),
         Ok(_) if size > 100.0 => Feedback::not_yet(format!(
-            "size {size:.0} is over 100: find a smaller body whose path is nearly straight"
+            "Size {size:.0} is over 100: find a smaller body whose path is nearly straight."
         )),
         Ok(w) if w.tortuosity <= 1.01 => Feedback::met(format!(
-            "at size {size:.0} the path is {:.3} times the straight line, with {} pebbles that matter",
+            "At size {size:.0} the path is {:.3} times the straight line, with {} pebbles that matter.",
             w.tortuosity, w.obstacles
         )),
         Ok(w) => Feedback::not_yet(format!(
-            "at size {size:.0} the path is {:.3} times the straight line: {} pebbles still matter",
+            "At size {size:.0} the path is {:.3} times the straight line: {} pebbles still matter.",
             w.tortuosity, w.obstacles
         )),
     }
@@ -32,20 +32,20 @@ pub fn nearly_straight(seed: u64, size: f64) -> Feedback {
 /// and reach the goal."
 pub fn fix_the_car(body: &'static str, behaviours: &'static str, world: &'static str) -> Feedback {
     if world != "maze" {
-        return Feedback::not_yet("keep the world: the task is to get through the maze");
+        return Feedback::not_yet("Keep the world: the task is to get through the maze.");
     }
     let changed = usize::from(body != "car") + usize::from(behaviours != "go-and-avoid");
     if changed != 1 {
         return Feedback::not_yet(format!(
-            "change exactly one slot (you changed {changed}): that is how you learn which one the failure belongs to"
+            "Change exactly one slot (you changed {changed}): that is how you learn which one the failure belongs to."
         ));
     }
     match outcome(body, behaviours, world) {
         Ok((o, _)) if o.reached => Feedback::met(format!(
-            "the {body} with {behaviours} reached the goal in {:.1} s: the failure belonged to the body (embodiment)",
+            "The {body} with {behaviours} reached the goal in {:.1} s: the failure belonged to the body (embodiment).",
             o.time.unwrap_or_default()
         )),
-        Ok((o, _)) => Feedback::not_yet(format!("still no: {}", o.why)),
+        Ok((o, _)) => Feedback::not_yet(format!("Still no: {}.", o.why)),
         Err(e) => Feedback::not_yet(e.to_string()),
     }
 }
@@ -71,7 +71,7 @@ mod tests {
         assert!(
             fix_the_car("omni", "go-and-avoid", "open")
                 .message
-                .contains("keep the world")
+                .contains("Keep the world")
         );
     }
 }

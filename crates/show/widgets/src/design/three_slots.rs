@@ -69,6 +69,9 @@ struct ThreeSlots {
     /// Which slot changed last: 0 body, 1 behaviours, 2 world.
     changed: Option<usize>,
     feedback: Option<Feedback>,
+    /// The failure whose reason shows under the matrix (a tap or a click
+    /// picks it: hovering cannot work on a touch screen).
+    why: Option<usize>,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
@@ -92,6 +95,7 @@ impl ThreeSlots {
             matrix: Vec::new(),
             changed: None,
             feedback: None,
+            why: None,
         };
         w.rerun();
         w
@@ -201,36 +205,37 @@ impl ThreeSlots {
         rect
     }
 
-    /// The three analysis patterns; the one whose slot changed is lit.
+    /// The three analysis patterns side by side (one under the other on a
+    /// phone); the one whose slot changed is lit.
     fn design_view(&self, ui: &mut egui::Ui) {
-        ui.horizontal_wrapped(|ui| {
-            for (k, (pattern, slot, participants)) in PATTERNS.iter().enumerate() {
-                let lit = self.changed == Some(k);
-                let stroke = if lit {
-                    Stroke::new(2.5, theme::error_color(ui))
-                } else {
-                    Stroke::new(1.0, ui.visuals().weak_text_color())
-                };
-                egui::Frame::new()
-                    .stroke(stroke)
-                    .corner_radius(6.0)
-                    .inner_margin(6.0)
-                    .show(ui, |ui| {
-                        ui.vertical(|ui| {
-                            ui.label(RichText::new(format!("{pattern} ({slot})")).strong());
-                            for p in *participants {
-                                ui.label(RichText::new(*p).size(theme::LABEL_SIZE));
-                            }
-                            if lit {
-                                ui.label(
-                                    RichText::new("changed")
-                                        .color(theme::error_color(ui))
-                                        .size(theme::LABEL_SIZE),
-                                );
-                            }
-                        });
-                    });
-            }
+        crate::widget::panels(ui, PATTERNS.len(), |ui, k, width| {
+            let Some((pattern, slot, participants)) = PATTERNS.get(k) else {
+                return;
+            };
+            let lit = self.changed == Some(k);
+            let stroke = if lit {
+                Stroke::new(2.5, theme::error_color(ui))
+            } else {
+                Stroke::new(1.0, ui.visuals().weak_text_color())
+            };
+            egui::Frame::new()
+                .stroke(stroke)
+                .corner_radius(6.0)
+                .inner_margin(6.0)
+                .show(ui, |ui| {
+                    ui.set_width(width - 14.0);
+                    ui.label(RichText::new(format!("{pattern} ({slot})")).strong());
+                    for p in *participants {
+                        ui.label(RichText::new(*p).size(theme::LABEL_SIZE));
+                    }
+                    if lit {
+                        ui.label(
+                            RichText::new("changed")
+                                .color(theme::error_color(ui))
+                                .size(theme::LABEL_SIZE),
+                        );
+                    }
+                });
         });
     }
 
@@ -283,11 +288,21 @@ impl ThreeSlots {
         feedback_ui(ui, self.feedback.as_ref());
     }
 
-    fn matrix_ui(&self, ui: &mut egui::Ui) {
-        crate::widget::sideways(ui, |ui| self.matrix_grid(ui));
+    fn matrix_ui(&mut self, ui: &mut egui::Ui) {
+        let narrow = crate::widget::narrow(ui);
+        crate::widget::sideways(ui, |ui| self.matrix_grid(ui, narrow));
+        let picked = self.why.and_then(|i| self.matrix.get(i));
+        if let Some(o) = picked {
+            ui.label(format!(
+                "{}, {} in the {}: {}.",
+                o.body, o.behaviours, o.world, o.why
+            ));
+        }
     }
 
-    fn matrix_grid(&self, ui: &mut egui::Ui) {
+    /// The matrix; a failure is a button that shows why under it. On a
+    /// narrow column a row's name takes two lines.
+    fn matrix_grid(&mut self, ui: &mut egui::Ui, narrow: bool) {
         egui::Grid::new(ui.scope_id().with("matrix"))
             .striped(true)
             .show(ui, |ui| {
@@ -298,35 +313,47 @@ impl ThreeSlots {
                 ui.end_row();
                 for b in BODIES {
                     for s in BEHAVIOURS {
-                        ui.label(format!("{b}, {s}"));
+                        ui.label(if narrow {
+                            format!("{b},\n{s}")
+                        } else {
+                            format!("{b}, {s}")
+                        });
                         for w in WORLDS {
-                            match self
-                                .matrix
-                                .iter()
-                                .find(|o| o.body == b && o.behaviours == s && o.world == w)
-                            {
-                                Some(o) if o.reached => {
-                                    ui.label(
-                                        RichText::new(format!(
-                                            "{:.0} s",
-                                            o.time.unwrap_or_default()
-                                        ))
-                                        .color(theme::good_color(ui)),
-                                    );
-                                }
-                                Some(o) => {
-                                    ui.label(RichText::new("fails").color(theme::error_color(ui)))
-                                        .on_hover_text(&o.why);
-                                }
-                                None => {
-                                    ui.label("…");
-                                }
-                            }
+                            self.matrix_cell(ui, b, s, w);
                         }
                         ui.end_row();
                     }
                 }
             });
+    }
+
+    fn matrix_cell(&mut self, ui: &mut egui::Ui, b: &str, s: &str, w: &str) {
+        let found = self
+            .matrix
+            .iter()
+            .position(|o| o.body == b && o.behaviours == s && o.world == w);
+        match found.and_then(|i| Some((i, self.matrix.get(i)?))) {
+            Some((_, o)) if o.reached => {
+                ui.label(
+                    RichText::new(format!("{:.0} s", o.time.unwrap_or_default()))
+                        .color(theme::good_color(ui)),
+                );
+            }
+            Some((i, o)) => {
+                let picked = self.why == Some(i);
+                let text = RichText::new("fails").color(theme::error_color(ui));
+                if ui
+                    .selectable_label(picked, text)
+                    .on_hover_text(&o.why)
+                    .clicked()
+                {
+                    self.why = (!picked).then_some(i);
+                }
+            }
+            None => {
+                ui.label("…");
+            }
+        }
     }
 }
 
@@ -351,7 +378,7 @@ impl LabWidget for ThreeSlots {
             ui.label(RichText::new(text).strong());
         }
         self.design_view(ui);
-        ui.label(RichText::new("Every combination (hover a failure for why):").strong());
+        ui.label(RichText::new("Every combination (tap a failure for why):").strong());
         self.matrix_ui(ui);
         if self.fill_matrix() {
             crate::widget::animate(ui);

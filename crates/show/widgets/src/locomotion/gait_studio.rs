@@ -35,6 +35,8 @@ const EDGE: f64 = 0.002;
 const NARROW: f32 = 620.0;
 /// The run file's name.
 const FILE: &str = "studio.gait.json";
+/// Room for one leg's phase slider (its label, slider and number), points.
+const PHASE_CELL: f32 = 270.0;
 
 /// What the lesson sets and a link carries: the schema's parameters.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -253,11 +255,12 @@ impl GaitStudio {
             ui.add(egui::Slider::new(&mut s.com[0], com.clone()).text("CoM x (m)"));
             ui.add(egui::Slider::new(&mut s.com[1], com).text("CoM y (m)"));
         });
-        crate::widget::control_row(ui, |ui| {
-            for (leg, phase) in gait.legs.iter().zip(phases.iter_mut()) {
+        crate::widget::control_grid(ui, "gait-phases", phases.len(), PHASE_CELL, |ui, i| {
+            let name = gait.legs.get(i).map_or("", |l| l.name.as_str());
+            if let Some(phase) = phases.get_mut(i) {
                 ui.add(
                     egui::Slider::new(phase, numbers_range(NAME, "phases"))
-                        .text(format!("φ {}", leg.name))
+                        .text(format!("φ {name}"))
                         .max_decimals(3),
                 );
             }

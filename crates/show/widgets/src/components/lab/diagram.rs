@@ -17,8 +17,10 @@ use crate::theme;
 const LINE: f32 = 15.0;
 const HEADER: f32 = 30.0;
 const GAP: f32 = 14.0;
-/// A press this close (points) to an anchor grabs it.
-const GRAB: f32 = 10.0;
+/// A press this close (points) to an anchor grabs it, with a mouse.
+const GRAB: f32 = 12.0;
+/// The same with a finger, which covers more than it can aim.
+const TOUCH_GRAB: f32 = 22.0;
 
 /// Where each box goes: column = longest chain of servers behind it.
 pub fn columns(views: &[ComponentView]) -> Vec<usize> {
@@ -114,9 +116,9 @@ impl Anchors {
         Self { services, ports }
     }
 
-    fn near(list: &[(String, Pos2)], at: Pos2) -> Option<&str> {
+    fn near(list: &[(String, Pos2)], at: Pos2, grab: f32) -> Option<&str> {
         list.iter()
-            .filter(|(_, p)| p.distance(at) < GRAB)
+            .filter(|(_, p)| p.distance(at) < grab)
             .min_by(|a, b| a.1.distance(at).total_cmp(&b.1.distance(at)))
             .map(|(n, _)| n.as_str())
     }
@@ -358,7 +360,11 @@ fn draw_tokens(
     }
 }
 
-/// Select a port by clicking it; wire it by dragging it onto a service.
+/// Select a port by pressing it; wire it by dragging it onto a service.
+/// The drag is read from the pointer's own presses and releases, so it
+/// starts at the press however fast the pointer then moves (even when the
+/// press and the release reach one frame), and a finger wires as a mouse
+/// does. A drop away from every service says so.
 fn interact(
     ui: &egui::Ui,
     painter: &egui::Painter,
@@ -366,35 +372,69 @@ fn interact(
     response: &egui::Response,
     anchors: &Anchors,
 ) -> Option<Action> {
-    // A drag starts once the pointer has moved a little: the port is
-    // where it was pressed, not where it is now.
-    if response.drag_started()
-        && let Some(at) = ui
-            .input(|i| i.pointer.press_origin())
-            .or(response.interact_pointer_pos())
-        && let Some(port) = Anchors::near(&anchors.ports, at)
-    {
-        look.dragging = Some(port.to_owned());
-        look.selected = Some(port.to_owned());
+    let grab = if ui.input(|i| i.has_touch_screen()) {
+        TOUCH_GRAB
+    } else {
+        GRAB
+    };
+    let presses: Vec<(Pos2, bool)> = ui.input(|i| {
+        i.events
+            .iter()
+            .filter_map(|e| match e {
+                egui::Event::PointerButton {
+                    pos,
+                    button: egui::PointerButton::Primary,
+                    pressed,
+                    ..
+                } => Some((*pos, *pressed)),
+                _ => None,
+            })
+            .collect()
+    });
+    let mut action = None;
+    for (at, pressed) in presses {
+        if pressed && response.rect.contains(at) {
+            look.missed = None;
+            look.dragging = Anchors::near(&anchors.ports, at, grab).map(str::to_owned);
+            look.selected.clone_from(&look.dragging);
+        } else if !pressed && let Some(port) = look.dragging.take() {
+            action = drop_port(look, anchors, port, at, grab);
+        }
     }
-    if let (Some(port), Some(at)) = (&look.dragging, response.interact_pointer_pos())
+    if let (Some(port), Some(at)) = (&look.dragging, ui.input(|i| i.pointer.latest_pos()))
         && let Some(from) = anchors.port(port)
     {
-        painter.line_segment([from, at], Stroke::new(2.0, ui.visuals().text_color()));
+        let ink = ui.visuals().text_color();
+        painter.line_segment([from, at], Stroke::new(2.0, ink));
+        let target = Anchors::near(&anchors.services, at, grab).and_then(|s| anchors.service(s));
+        if let Some(target) = target {
+            painter.circle_stroke(target, grab * 0.8, Stroke::new(2.0, theme::good_color(ui)));
+        }
     }
-    if response.drag_stopped() {
-        let port = look.dragging.take()?;
-        let at = response.interact_pointer_pos()?;
-        let service = Anchors::near(&anchors.services, at)?;
+    action
+}
+
+/// A dragged port let go at `at`: wired to the service there; a press
+/// that did not leave the port only selects it; anywhere else, nothing is
+/// wired and the lab says where to drop.
+fn drop_port(
+    look: &mut Look,
+    anchors: &Anchors,
+    port: String,
+    at: Pos2,
+    grab: f32,
+) -> Option<Action> {
+    if let Some(service) = Anchors::near(&anchors.services, at, grab) {
         return Some(Action::Connect {
             port,
             service: service.to_owned(),
         });
     }
-    if response.clicked()
-        && let Some(at) = response.interact_pointer_pos()
-    {
-        look.selected = Anchors::near(&anchors.ports, at).map(str::to_owned);
+    let stayed = anchors.port(&port).is_some_and(|p| p.distance(at) < grab);
+    if !stayed {
+        look.missed = Some(format!(
+            "Nothing was wired: drop {port} on a service, at the right edge of a box."
+        ));
     }
     None
 }

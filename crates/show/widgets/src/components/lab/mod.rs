@@ -130,6 +130,8 @@ struct Look {
     window: f64,
     selected: Option<String>,
     dragging: Option<String>,
+    /// Why the last drag wired nothing (dropped away from every service).
+    missed: Option<String>,
     /// Each box's column, from the wiring at the start.
     columns: Vec<usize>,
     /// Where each port and service was drawn last.
@@ -324,7 +326,7 @@ impl ComponentLab {
             },
         );
         player.run(ui, 40);
-        if let Some(r) = &self.refusal {
+        for r in [&self.refusal, &self.look.missed].into_iter().flatten() {
             ui.label(RichText::new(r).color(crate::theme::error_color(ui)));
         }
         let rt = &player.state().rt;

@@ -155,8 +155,11 @@ fn moving_a_slider_keeps_the_changes_and_the_instant() {
     assert_eq!(p.state().system.latency.fixed, 0.3);
 }
 
-#[test]
-fn a_port_dragged_onto_a_service_is_wired_while_it_runs() {
+type Harness = egui_kittest::Harness<'static, (ComponentLab, bool)>;
+
+/// The robot system's lab at 1 s, drawn, with the anchors of `port` and
+/// `service`.
+fn robot_lab_at_one_second(port: &str, service: &str) -> (Harness, egui::Pos2, egui::Pos2) {
     // The lab's fonts take effect a frame after they are installed.
     let mut h = egui_kittest::Harness::builder()
         .with_size(egui::vec2(1200.0, 2400.0))
@@ -174,18 +177,38 @@ fn a_port_dragged_onto_a_service_is_wired_while_it_runs() {
     h.state_mut().0.seek(1.0);
     h.run_steps(3);
     let anchors = &h.state().0.look.anchors;
-    let (Some(from), Some(to)) = (
-        anchors.port("motion.source"),
-        anchors.service("planner.route"),
-    ) else {
+    let (Some(from), Some(to)) = (anchors.port(port), anchors.service(service)) else {
         panic!("the diagram has no such port or service")
     };
-    let button = |pos, pressed| egui::Event::PointerButton {
+    (h, from, to)
+}
+
+fn button(pos: egui::Pos2, pressed: bool) -> egui::Event {
+    egui::Event::PointerButton {
         pos,
         button: egui::PointerButton::Primary,
         pressed,
         modifiers: egui::Modifiers::NONE,
-    };
+    }
+}
+
+/// The wiring the learner made, at 1 s: motion.source to planner.route.
+fn assert_wired_at_one_second(h: &mut Harness) {
+    let events = player(&mut h.state_mut().0).events();
+    assert_eq!(events.len(), 1, "{events:?}");
+    assert_eq!(events[0].1, connect("motion.source", "planner.route"));
+    assert!((events[0].0 - 1.0).abs() < 1e-9);
+    let view = player(&mut h.state_mut().0).state().rt.component("motion");
+    let source = view.and_then(|c| c.ports.into_iter().find(|p| p.name == "source"));
+    assert_eq!(
+        source.and_then(|p| p.connected_to).as_deref(),
+        Some("planner.route")
+    );
+}
+
+#[test]
+fn a_port_dragged_onto_a_service_is_wired_while_it_runs() {
+    let (mut h, from, to) = robot_lab_at_one_second("motion.source", "planner.route");
     let steps = [
         egui::Event::PointerMoved(from),
         button(from, true),
@@ -197,14 +220,62 @@ fn a_port_dragged_onto_a_service_is_wired_while_it_runs() {
         h.input_mut().events.push(event);
         h.run_steps(1);
     }
-    let events = player(&mut h.state_mut().0).events();
-    assert_eq!(events.len(), 1, "{events:?}");
-    assert_eq!(events[0].1, connect("motion.source", "planner.route"));
-    assert!((events[0].0 - 1.0).abs() < 1e-9);
-    let view = player(&mut h.state_mut().0).state().rt.component("motion");
-    let source = view.and_then(|c| c.ports.into_iter().find(|p| p.name == "source"));
-    assert_eq!(
-        source.and_then(|p| p.connected_to).as_deref(),
-        Some("planner.route")
-    );
+    assert_wired_at_one_second(&mut h);
+}
+
+#[test]
+fn a_fast_drag_from_the_edge_of_a_port_wires_it() {
+    // Pressed 8 points off the port's centre, then straight to the service
+    // and released within one frame: no slow start for egui to see.
+    let (mut h, from, to) = robot_lab_at_one_second("motion.source", "planner.route");
+    let press = from + egui::vec2(8.0, 0.0);
+    h.input_mut().events.push(egui::Event::PointerMoved(press));
+    h.run_steps(1);
+    for event in [
+        button(press, true),
+        egui::Event::PointerMoved(to),
+        button(to, false),
+    ] {
+        h.input_mut().events.push(event);
+    }
+    h.run_steps(2);
+    assert_wired_at_one_second(&mut h);
+}
+
+#[test]
+fn a_finger_drag_wires_a_port_and_a_miss_says_where_to_drop() {
+    use egui_kittest::kittest::Queryable as _;
+    let (mut h, from, to) = robot_lab_at_one_second("motion.source", "planner.route");
+    // A finger lands 16 points left of the port (within reach on a touch
+    // screen), then drops halfway: nothing wired, and the lab says why.
+    let press = from + egui::vec2(-16.0, 0.0);
+    let halfway = from + (to - from) * 0.5 + egui::vec2(0.0, 60.0);
+    fn drag(h: &mut Harness, id: u64, press: egui::Pos2, end: egui::Pos2) {
+        for (phase, pos, down) in [
+            (egui::TouchPhase::Start, press, Some(true)),
+            (egui::TouchPhase::Move, end, None),
+            (egui::TouchPhase::End, end, Some(false)),
+        ] {
+            h.input_mut().events.push(egui::Event::Touch {
+                device_id: egui::TouchDeviceId(1),
+                id: egui::TouchId(id),
+                phase,
+                pos,
+                force: None,
+            });
+            h.input_mut().events.push(egui::Event::PointerMoved(pos));
+            if let Some(pressed) = down {
+                h.input_mut().events.push(button(pos, pressed));
+            }
+            h.run_steps(1);
+        }
+        h.run_steps(1);
+    }
+    drag(&mut h, 1, press, halfway);
+    assert!(player(&mut h.state_mut().0).events().is_empty());
+    h.get_by_label_contains("Nothing was wired: drop motion.source on a service");
+    // The same finger, now dropped on the service, wires it.
+    drag(&mut h, 2, press, to);
+    assert_wired_at_one_second(&mut h);
+    assert!(h.query_by_label_contains("Nothing was wired").is_none());
 }

@@ -196,10 +196,11 @@ impl Sandbox {
             let k = k.min(d.path.len().saturating_sub(1));
             path(&d.path[..=k], ink.accent, 2.5);
             let robot = view.to_screen(d.path[k]);
+            painter.circle_filled(robot, 5.0, ink.accent);
             if k + 1 == d.path.len() && d.outcome == Outcome::Trapped {
-                cross(painter, robot, 6.0, Stroke::new(2.5, ink.bad));
-            } else {
-                painter.circle_filled(robot, 5.0, ink.accent);
+                // Stuck: a ring round the robot (a cross means a trap, and
+                // the robot may have stopped on a saddle instead).
+                painter.circle_stroke(robot, 10.0, Stroke::new(2.0, ink.bad));
             }
         }
         if self.settings.unicycle

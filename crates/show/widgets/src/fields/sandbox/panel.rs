@@ -6,11 +6,15 @@ use egui::{RichText, ScrollArea};
 use kinolab_common::display::fixed;
 use kinolab_fields::catalogue::PRESETS;
 use kinolab_fields::descend::{Descent, Outcome};
+use kinolab_fields::minima::Equilibrium as EquilibriumPoint;
 use kinolab_fields::minima::Kind as Equilibrium;
 
 use super::Sandbox;
 use super::analysis::REMEDIES;
 use super::piece::{Kind, Piece};
+
+/// How close to a saddle (m) a stopped descent counts as stopped on it.
+const SADDLE_NEAR: f64 = 0.05;
 
 impl Sandbox {
     pub(super) fn panel(&mut self, ui: &mut egui::Ui) {
@@ -145,7 +149,10 @@ impl Sandbox {
             );
         }
         if let Some(d) = &self.descent {
-            ui.label(format!("Point robot: {}", outcome_text(d)));
+            ui.label(format!(
+                "Point robot: {}",
+                outcome_text(d, &self.analysis.equilibria)
+            ));
         }
         if self.settings.unicycle
             && let Some(t) = &self.analysis.trail
@@ -178,7 +185,7 @@ impl Sandbox {
                 .remedies
                 .get(k)
                 .and_then(|r| r.descent.as_ref());
-            let text = run.map_or_else(|| "…".to_owned(), outcome_text);
+            let text = run.map_or_else(|| "…".to_owned(), |d| outcome_text(d, &[]));
             if ui
                 .checkbox(&mut self.design.drawn[k], format!("{name}: {text}"))
                 .changed()
@@ -211,9 +218,20 @@ impl Sandbox {
     }
 }
 
-fn outcome_text(d: &Descent) -> String {
+/// How the point robot's descent ended; a stop on a saddle says so (it is
+/// not a trap: the smallest nudge sideways frees the robot).
+fn outcome_text(d: &Descent, equilibria: &[EquilibriumPoint]) -> String {
+    let on_saddle = equilibria.iter().any(|e| {
+        e.kind == Equilibrium::Saddle && (e.x - d.end[0]).hypot(e.y - d.end[1]) < SADDLE_NEAR
+    });
     match d.outcome {
         Outcome::Reached => format!("reaches the goal in {} steps", d.steps()),
+        Outcome::Trapped if on_saddle => format!(
+            "stopped on a saddle at ({}, {}) after {} steps: balanced, not trapped (a nudge sideways frees it)",
+            fixed(d.end[0], 2),
+            fixed(d.end[1], 2),
+            d.steps()
+        ),
         Outcome::Trapped => format!(
             "stuck at ({}, {}) after {} steps",
             fixed(d.end[0], 2),
