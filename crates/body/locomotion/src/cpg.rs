@@ -1,7 +1,7 @@
 //! Central pattern generators: one oscillator per leg, coupled so that
 //! their phase differences settle on a gait's.
 //!
-//! dθᵢ/dt = 2πν + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ), with ψᵢⱼ = 2π(φᵢ − φⱼ) from
+//! dθᵢ/dt = 2πf + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ), with ψᵢⱼ = 2π(φᵢ − φⱼ) from
 //! the gait's lift-off phases; integrated by classic RK4 (the network's
 //! integrator, [`Network::step_in`]). A file may also ask for Van der Pol
 //! oscillators, a weight per pair, kicks (a leg's phase turned on at a
@@ -33,7 +33,7 @@ pub const LOCK_TOLERANCE: f64 = 1e-3;
     expecting = "a CPG file (an object with `frequency`, `legs` and `target_phases`)"
 )]
 pub struct Cpg {
-    /// ν, Hz.
+    /// f, Hz.
     pub frequency: f64,
     pub legs: Vec<String>,
     /// φᵢ, the lift-off phases the network should settle on, in [0, 1).
@@ -344,7 +344,7 @@ impl CpgRun {
 }
 
 /// The phase oscillators' law, the one place it is written:
-/// dθᵢ/dt = 2πν + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ), ψᵢⱼ = 2π(φᵢ − φⱼ).
+/// dθᵢ/dt = 2πf + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ), ψᵢⱼ = 2π(φᵢ − φⱼ).
 pub(crate) fn phase_rates(
     frequency: f64,
     phases: &[f64],

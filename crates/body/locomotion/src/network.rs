@@ -2,8 +2,8 @@
 //! coupling matrix, and Van der Pol oscillators, the classic
 //! amplitude-and-phase alternative. Both settle on a gait's phase lags.
 //!
-//! - phase oscillators: dθᵢ/dt = 2πν + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ);
-//! - Van der Pol: ẍᵢ − μ(1 − xᵢ²)ẋᵢ + (2πν)² xᵢ = Σⱼ wᵢⱼ (ẋⱼ* − ẋᵢ),
+//! - phase oscillators: dθᵢ/dt = 2πf + Σⱼ wᵢⱼ sin(θⱼ − θᵢ − ψᵢⱼ);
+//! - Van der Pol: ẍᵢ − μ(1 − xᵢ²)ẋᵢ + (2πf)² xᵢ = Σⱼ wᵢⱼ (ẋⱼ* − ẋᵢ),
 //!   where ẋⱼ* is the velocity oscillator j would have if it were shifted
 //!   back by ψᵢⱼ: each pulls the others towards their places in the gait.
 //!
@@ -31,7 +31,7 @@ pub enum Model {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Network {
     pub model: Model,
-    /// ν, Hz.
+    /// f, Hz.
     pub frequency: f64,
     /// φᵢ, the lift-off phases to settle on.
     pub phases: Vec<f64>,

@@ -40,7 +40,7 @@ pub struct Pace {
     /// walker's stride.
     #[serde(skip)]
     pub gait: Gait,
-    /// ν = βv / L, Hz: from v = L / (βT) with T = 1/ν.
+    /// f = βv / L, Hz: from v = L / (βT) with T = 1/f.
     pub frequency: f64,
 }
 

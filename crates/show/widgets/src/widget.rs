@@ -173,8 +173,26 @@ pub fn feedback_ui(ui: &mut egui::Ui, feedback: Option<&Feedback>) {
         } else {
             theme::error_color(ui)
         };
-        ui.label(RichText::new(feedback_text(f)).color(color));
+        message_ui(ui, &feedback_text(f), color);
     }
+}
+
+/// A message from the core in `color`, its `backticked` names (ports,
+/// services, behaviours) set in the code face without the backticks.
+pub fn message_ui(ui: &mut egui::Ui, text: &str, color: egui::Color32) -> egui::Response {
+    let body = egui::TextStyle::Body.resolve(ui.style());
+    let code = egui::FontId::monospace(body.size * 0.95);
+    let mut job = egui::text::LayoutJob::default();
+    for (i, part) in text.split('`').enumerate() {
+        let font = if i % 2 == 1 {
+            code.clone()
+        } else {
+            body.clone()
+        };
+        job.append(part, 0.0, egui::TextFormat::simple(font, color));
+    }
+    job.wrap.max_width = ui.available_width();
+    ui.label(job)
 }
 
 /// A feedback as one sentence or more: "Solved. " before a met goal's
@@ -309,6 +327,25 @@ pub fn triple(p: &Params, name: &str) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn backticked_names_lose_their_backticks_on_screen() {
+        use egui_kittest::kittest::Queryable as _;
+        // The lab's fonts take effect a frame after they are installed.
+        let mut h = egui_kittest::Harness::new_ui_state(
+            |ui, ready: &mut bool| {
+                if *ready {
+                    message_ui(ui, "`planner.map` is not connected", egui::Color32::RED);
+                } else {
+                    crate::theme::install(ui.ctx());
+                    *ready = true;
+                }
+            },
+            false,
+        );
+        h.run_steps(2);
+        h.get_by_label("planner.map is not connected");
+    }
 
     #[test]
     fn feedback_reads_as_sentences_with_solved_said_once() {

@@ -225,21 +225,21 @@ fn the_trot_exercise_wants_the_trots_offsets() {
 fn the_speed_picks_the_cpgs_gait_through_the_froude_number() {
     let mut h = harness(widget("cpg-lab", &[("speed", "1.2")]));
     h.run_steps(3);
-    // l = 0.5 m: Fr = 1.2² / (9.80665 · 0.5) ≈ 0.29, a walk; ν = 0.75 · 1.2 / 0.5.
-    h.get_by_label_contains("Fr = v²/(g l) = 0.29 → crawl, ν = βv/L = 1.80 Hz");
+    // l = 0.5 m: Fr = 1.2² / (9.80665 · 0.5) ≈ 0.29, a walk; f = 0.75 · 1.2 / 0.5.
+    h.get_by_label_contains("Fr = v²/(g l) = 0.29 → crawl, f = βv/L = 1.80 Hz");
     // Past √(0.5 g l) ≈ 1.57 m/s the trot takes over, at a lower frequency.
     h.get_all_by_label("speed v (m/s)")
         .next()
         .unwrap()
         .set_value_accesskit(2.0);
     h.run_steps(2);
-    h.get_by_label_contains("Fr = v²/(g l) = 0.82 → trot, ν = βv/L = 2.00 Hz");
+    h.get_by_label_contains("Fr = v²/(g l) = 0.82 → trot, f = βv/L = 2.00 Hz");
     h.get_all_by_label("speed v (m/s)")
         .next()
         .unwrap()
         .set_value_accesskit(4.0);
     h.run_steps(2);
-    h.get_by_label_contains("→ gallop, ν = βv/L = 2.40 Hz");
+    h.get_by_label_contains("→ gallop, f = βv/L = 2.40 Hz");
 }
 
 #[test]

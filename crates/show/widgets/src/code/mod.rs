@@ -232,7 +232,8 @@ impl Code {
         }
         ui.label(RichText::new("Hints").strong());
         for hint in &self.exercise.hints[..shown] {
-            ui.label(format!("· {hint}"));
+            let text = format!("· {hint}");
+            crate::widget::message_ui(ui, &text, ui.visuals().text_color());
         }
     }
 

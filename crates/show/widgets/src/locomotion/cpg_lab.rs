@@ -384,7 +384,7 @@ impl CpgLab {
         ui.add_enabled(
             tune.speed.is_none(),
             egui::Slider::new(&mut tune.frequency, range(NAME, "frequency"))
-                .text("frequency ν (Hz)"),
+                .text("frequency f (Hz)"),
         );
         weight_grid(ui, &mut tune.weights);
         if model != self.settings.model {
@@ -571,7 +571,7 @@ fn speed_controls(ui: &mut egui::Ui, tune: &mut Tune) {
     tune.follow_speed();
     if let Ok(pace) = quadruped_pace(v, LEG, STRIDE) {
         ui.label(format!(
-            "Fr = v²/(g l) = {} → {}, ν = βv/L = {} Hz",
+            "Fr = v²/(g l) = {} → {}, f = βv/L = {} Hz",
             fixed(pace.froude, 2),
             pace.gait.name.trim_start_matches("quadruped-"),
             fixed(pace.frequency, 2)

@@ -145,7 +145,7 @@ impl ZmpCartTable {
     fn controls(&mut self, ui: &mut egui::Ui) {
         let before = self.settings.clone();
         let s = &mut self.settings;
-        ui.add(egui::Slider::new(&mut s.height, range(NAME, "height")).text("CoM height z_c (m)"));
+        ui.add(egui::Slider::new(&mut s.height, range(NAME, "height")).text("CoM height (m)"));
         ui.add(
             egui::Slider::new(&mut s.push, range(NAME, "push"))
                 .step_by(0.005)
@@ -168,7 +168,10 @@ impl ZmpCartTable {
                 self.rebuild();
             }
             if let Some(table) = self.table() {
-                ui.label(format!("ω = √(g / z_c) = {} 1/s", fixed(table.omega(), 2)));
+                ui.label(format!(
+                    "ω = √(g / CoM height) = {} 1/s",
+                    fixed(table.omega(), 2)
+                ));
             }
         });
     }

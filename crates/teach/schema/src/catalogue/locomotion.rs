@@ -161,7 +161,7 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 "frequency",
                 Kind::Number { min: 0.2, max: 3.0 },
                 Some("1"),
-                "the oscillators' frequency ν (Hz) when no speed chooses it",
+                "the oscillators' frequency f (Hz) when no speed chooses it",
             ),
             param(
                 "model",

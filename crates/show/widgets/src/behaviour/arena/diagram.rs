@@ -61,7 +61,8 @@ impl Arena {
                     Some(Trace::Script { chose: None }) => "drove itself".to_owned(),
                     _ => "has not run yet".to_owned(),
                 };
-                ui.label(format!("Your coordinator {chose}."));
+                let text = format!("Your coordinator {chose}.");
+                crate::widget::message_ui(ui, &text, ui.visuals().text_color());
             }
         }
     }

@@ -327,7 +327,7 @@ impl ComponentLab {
         );
         player.run(ui, 40);
         for r in [&self.refusal, &self.look.missed].into_iter().flatten() {
-            ui.label(RichText::new(r).color(crate::theme::error_color(ui)));
+            crate::widget::message_ui(ui, r, crate::theme::error_color(ui));
         }
         let rt = &player.state().rt;
         let acted = port_panel(ui, rt, self.look.selected.as_deref());
@@ -457,10 +457,8 @@ fn port_panel(ui: &mut egui::Ui, rt: &Runtime, selected: Option<&str>) -> Option
         s.sent, s.received, s.lost, s.skipped, s.withheld, s.cancelled
     ));
     if why.reason != "received" {
-        ui.label(
-            RichText::new(format!("Why nothing? {}", why.message))
-                .color(crate::theme::error_color(ui)),
-        );
+        let text = format!("Why nothing? {}", why.message);
+        crate::widget::message_ui(ui, &text, crate::theme::error_color(ui));
     }
     let port = name.to_owned();
     ui.horizontal_wrapped(|ui| {
