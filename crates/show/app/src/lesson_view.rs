@@ -6,7 +6,7 @@ use std::collections::HashMap;
 use egui::{Color32, RichText, Stroke};
 use kinolab_lessons::{Align, Block, Inline, Quiz, Span, WidgetSpec, math::Math};
 
-use kinolab_formula::layout::{MathStyle, display_math, math_widget};
+use kinolab_formula::layout::{MathStyle, display_math, inline_size, math_widget};
 use kinolab_widgets::theme;
 use kinolab_widgets::widget::{LabWidget, error_box, sideways};
 
@@ -209,7 +209,8 @@ pub fn inline_ui(
     ui.horizontal_wrapped(|ui| {
         ui.spacing_mut().item_spacing.x = 0.0;
         ui.spacing_mut().item_spacing.y = 2.0;
-        for span in spans {
+        for (i, span) in spans.iter().enumerate() {
+            keep_with_punctuation(ui, span, spans.get(i + 1), size);
             match span {
                 Span::Text { text, style } => {
                     let mut rich = RichText::new(text).size(size);
@@ -247,6 +248,44 @@ pub fn inline_ui(
             }
         }
     });
+}
+
+/// Start a new row before a formula, inline code or a link when the word
+/// glued to its end (a comma, a full stop, "s") would not fit after it on
+/// this row: the two then wrap together, and punctuation never begins a
+/// line alone.
+fn keep_with_punctuation(ui: &mut egui::Ui, span: &Span, next: Option<&Span>, size: f32) {
+    let Some(Span::Text { text, style }) = next else {
+        return;
+    };
+    let glued = text.split(char::is_whitespace).next().unwrap_or_default();
+    if glued.is_empty() || style.link.is_some() {
+        return;
+    }
+    let width = |text: &str, font: egui::FontId| {
+        ui.ctx().fonts_mut(|f| {
+            f.layout_no_wrap(text.to_owned(), font, Color32::WHITE)
+                .size()
+                .x
+        })
+    };
+    let atom = match span {
+        Span::Code(code) => width(code, egui::FontId::monospace(theme::CODE_SIZE)),
+        Span::Math(math) => inline_size(ui, math, &math_style(ui, size)).x,
+        Span::Text { text, style } if style.link.is_some() => {
+            width(text, egui::FontId::proportional(size))
+        }
+        _ => return,
+    };
+    // The glued word and the space after it (the text breaks after it),
+    // with a point to spare for rounding.
+    let tail = format!("{glued} ");
+    let together = atom + width(&tail, egui::FontId::proportional(size)) + 1.0;
+    let row = ui.max_rect().width();
+    let left = ui.available_size_before_wrap().x;
+    if together > left && together <= row && left < row - 1.0 {
+        ui.end_row();
+    }
 }
 
 /// A formula in running text, in the same colour as the words around it.

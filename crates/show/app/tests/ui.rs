@@ -545,3 +545,54 @@ fn a_learners_code_survives_leaving_the_lesson_and_the_lab() {
     h.run_steps(4);
     assert_eq!(kept(&h), mine);
 }
+
+#[test]
+fn punctuation_after_inline_code_never_starts_a_line_alone() {
+    let text =
+        "Wire the port to `planner.map`, then press Run and watch `motion.source`; it moves.";
+    let spans = kinolab_lessons::parse_inline("test.md", 1, text).unwrap();
+    // From a column that holds `planner.map` and its comma on one row.
+    for width in (150..=420).step_by(3) {
+        let spans = spans.clone();
+        let mut h = Harness::builder()
+            .with_size(egui::vec2(width as f32, 400.0))
+            .build_ui_state(
+                move |ui, ready: &mut bool| {
+                    if *ready {
+                        let mut go = None;
+                        kinolab_app::lesson_view::inline_ui(ui, &spans, 16.0, false, &mut go);
+                    } else {
+                        kinolab_widgets::theme::install(ui.ctx());
+                        *ready = true;
+                    }
+                },
+                false,
+            );
+        h.run_steps(2);
+        // A row of text (a one-row label, or one row of a longer one) that
+        // begins with punctuation does not begin at the column's left edge.
+        let nodes: Vec<_> = h
+            .query_all(egui_kittest::kittest::by())
+            .filter_map(|n| {
+                let node = n.accesskit_node();
+                // A label's text is its accesskit value.
+                Some((node.value().or(node.label())?, node.bounding_box()?))
+            })
+            .collect();
+        let left = nodes
+            .iter()
+            .map(|(_, r)| r.x0)
+            .fold(f64::INFINITY, f64::min);
+        let mut seen = 0;
+        for (label, rect) in &nodes {
+            if label.starts_with([',', ';']) && rect.y1 - rect.y0 < 24.0 {
+                seen += 1;
+                assert!(
+                    rect.x0 > left + 1.0,
+                    "at {width} px `{label}` starts a line alone"
+                );
+            }
+        }
+        assert!(seen >= 2, "at {width} px: {nodes:?}");
+    }
+}
