@@ -16,6 +16,57 @@ const problems = [];
 let passed = 0;
 let failed = 0;
 
+// The points widgets publish on the page (a port of the component lab), in
+// CSS pixels: canvas content has no elements to aim at.
+async function points(page) {
+  const text = await page.evaluate(() => document.documentElement.dataset.kinolabPoints || "");
+  return Object.fromEntries(text.trim().split("\n").filter(Boolean).map((line) => {
+    const parts = line.split(" ");
+    const y = Number(parts.pop());
+    const x = Number(parts.pop());
+    return [parts.join(" "), { x, y }];
+  }));
+}
+
+// Scroll the lesson (mouse wheel at the page's left margin) until `name`
+// is well inside the window.
+async function bringIntoView(page, name) {
+  const { height } = page.viewportSize();
+  for (let i = 0; i < 60; i += 1) {
+    const at = (await points(page))[name];
+    if (at && at.y > 200 && at.y < height - 200) {
+      // The page glides to a stop: aim once it stands still.
+      await page.waitForTimeout(500);
+      const still = (await points(page))[name];
+      if (still.x === at.x && still.y === at.y) return at;
+      continue;
+    }
+    // The page's right margin: over the lesson, clear of any widget.
+    const { width } = page.viewportSize();
+    await page.mouse.move(width - 12, height / 2);
+    await page.mouse.wheel(0, at && at.y <= 200 ? -150 : 150);
+    await page.waitForTimeout(120);
+  }
+  throw new Error(`${name} never came into view: ${JSON.stringify(await points(page))}`);
+}
+
+// The widget states in the address, as the text they carry (version `b`:
+// settings lines; `a`: postcard, whose strings are plain UTF-8 too).
+async function widgetStates(page) {
+  const hash = await page.evaluate(() => location.hash);
+  const query = hash.split("?")[1] || "";
+  return query.split("&").map((kv) => kv.split("=")[1] || "")
+    .filter((v) => /^[ab]/.test(v)).map((v) => Buffer.from(v.slice(1), "base64url").toString());
+}
+
+const wiringLesson = "component-patterns/dynamic-wiring";
+async function assertWired(page) {
+  await page.waitForTimeout(400);
+  const states = await widgetStates(page);
+  assert.ok(states.some((s) => s.includes("motion.source") && s.includes("planner.route")),
+    `no connect in the address: ${JSON.stringify(states)} (${await page.evaluate(() => location.hash)})`);
+}
+
 async function check(name, fn) {
   try {
     await fn();
@@ -165,6 +216,23 @@ try {
   const wide = ["wheeled-locomotion/icr-and-holonomy", "motion-control/feedback-and-polar-coordinates",
     "legged-locomotion/gaits", "legged-locomotion/central-pattern-generators",
     "software-stability/analysis-patterns", "component-patterns/dynamic-wiring"];
+  await check("a port is wired by a mouse drag at a normal speed", async () => {
+    const desk = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
+    watch(desk, "wiring");
+    await desk.goto(`${server.url}#/${wiringLesson}`);
+    await waitForPage(desk, wiringLesson);
+    const from = await bringIntoView(desk, "port motion.source");
+    const to = (await points(desk))["service planner.route"];
+    // About a quarter of a second from press to release.
+    await desk.mouse.move(from.x, from.y);
+    await desk.mouse.down();
+    await desk.mouse.move(to.x, to.y, { steps: 8 });
+    await desk.mouse.up();
+    await assertWired(desk);
+    await desk.screenshot({ path: `${out}/wired-by-mouse.png` });
+    await desk.close();
+  });
+
   for (const width of [1024, 1280]) {
     const desk = await (await browser.newContext({ viewport: { width, height: 800 } })).newPage();
     watch(desk, `${width} px`);
@@ -215,6 +283,24 @@ try {
     await small.waitForTimeout(300);
     const [right, screen] = (await small.evaluate(() => document.documentElement.dataset.kinolabExtent)).split(" ").map(Number);
     assert.ok(right <= screen + 0.5, `after the gestures the content reaches ${right} on a ${screen} wide screen`);
+  });
+
+  await check("a finger wires a port on the phone", async () => {
+    await small.goto(`${server.url}#/${wiringLesson}`);
+    await waitForPage(small, wiringLesson);
+    const from = await bringIntoView(small, "port motion.source");
+    const to = (await points(small))["service planner.route"];
+    const cdp = await phone.newCDPSession(small);
+    const touch = (type, points) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints: points });
+    await touch("touchStart", [{ x: from.x, y: from.y, id: 1 }]);
+    for (let i = 1; i <= 8; i += 1) {
+      const f = i / 8;
+      await touch("touchMove", [{ x: from.x + (to.x - from.x) * f, y: from.y + (to.y - from.y) * f, id: 1 }]);
+      await small.waitForTimeout(16);
+    }
+    await touch("touchEnd", []);
+    await assertWired(small);
+    await small.screenshot({ path: `${out}/wired-by-finger.png` });
   });
 
   await check("no console errors, page errors or failed loads", async () => {

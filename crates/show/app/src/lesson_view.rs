@@ -236,6 +236,9 @@ pub fn inline_ui(
                             ui.label(rich);
                         }
                     }
+                    if style.emphasis {
+                        italic_correction(ui, spans.get(i + 1), size);
+                    }
                 }
                 Span::Code(code) => {
                     ui.label(RichText::new(code).code().size(theme::CODE_SIZE));
@@ -285,6 +288,21 @@ fn keep_with_punctuation(ui: &mut egui::Ui, span: &Span, next: Option<&Span>, si
     let left = ui.available_size_before_wrap().x;
     if together > left && together <= row && left < row - 1.0 {
         ui.end_row();
+    }
+}
+
+/// egui slants italics by shifting each glyph's top a quarter of its height
+/// to the right, so the last letter of an emphasised word leans over the
+/// space after it ("away from" read as "awayfrom"). Type-setters add an
+/// italic correction there: a little room before the upright text.
+fn italic_correction(ui: &mut egui::Ui, next: Option<&Span>, size: f32) {
+    let upright = match next {
+        Some(Span::Text { style, .. }) => !style.emphasis,
+        Some(Span::LineBreak) | None => false,
+        Some(_) => true,
+    };
+    if upright {
+        ui.add_space(size * 0.15);
     }
 }
 

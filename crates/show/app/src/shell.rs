@@ -52,6 +52,9 @@ pub struct KinolabApp {
     /// How far right the page's content reached on the last frame, and the
     /// screen's right edge (see [`KinolabApp::extent`]).
     extent: (f32, f32),
+    /// The named points widgets published on the last frame (see
+    /// [`KinolabApp::points`]).
+    points: String,
     /// The device has a touch screen: a finger drag scrolls the page from
     /// the first touch on (egui learns of touch only from touch events,
     /// which arrive after the first press).
@@ -88,6 +91,7 @@ impl KinolabApp {
             style_ready: false,
             frames_drawn: 0,
             extent: (0.0, 0.0),
+            points: String::new(),
             touch_screen: false,
         };
         app.follow_hash(hash);
@@ -333,6 +337,13 @@ impl KinolabApp {
         self.extent
     }
 
+    /// The points widgets published on the last frame (a port of the
+    /// component lab), as `name x y` lines in CSS pixels: what a browser
+    /// test aims at on the canvas.
+    pub fn points(&self) -> &str {
+        &self.points
+    }
+
     /// How many frames have drawn content (0 while fonts are being set up).
     pub fn frames_drawn(&self) -> u64 {
         self.frames_drawn
@@ -495,6 +506,7 @@ impl KinolabApp {
                 });
             });
             self.extent = (page.response.rect.right(), ui.ctx().content_rect().right());
+            self.points = probe_text(ui.ctx());
         });
     }
 
@@ -682,4 +694,14 @@ fn lesson_neighbours(
         });
     });
     target
+}
+
+/// The widgets' published points as `name x y` lines in CSS pixels (a
+/// point is `zoom` CSS pixels).
+fn probe_text(ctx: &egui::Context) -> String {
+    let zoom = ctx.zoom_factor();
+    kinolab_widgets::probe::take(ctx)
+        .iter()
+        .map(|(name, at)| format!("{name} {:.0} {:.0}\n", at.x * zoom, at.y * zoom))
+        .collect()
 }

@@ -93,7 +93,7 @@ pub fn after_frame(app: &mut KinolabApp) {
     }
     let (right, screen) = app.extent();
     let extent = format!("{right:.0} {screen:.0}");
-    let signal = format!("{page}|{}|{extent}", app.title());
+    let signal = format!("{page}|{}|{extent}|{}", app.title(), app.points());
     if LAST_SIGNAL.with_borrow(|last| *last != signal) {
         if let Some(document) = window().and_then(|w| w.document()) {
             document.set_title(&app.title());
@@ -101,6 +101,8 @@ pub fn after_frame(app: &mut KinolabApp) {
                 let _ = root.set_attribute("data-kinolab-page", &page);
                 // Where the page's content ends and where the screen does.
                 let _ = root.set_attribute("data-kinolab-extent", &extent);
+                // Where the widgets' named points are (for browser tests).
+                let _ = root.set_attribute("data-kinolab-points", app.points());
                 if root.get_attribute("data-kinolab-ready").is_none() {
                     // Milliseconds from navigation to the first drawn frame.
                     let now = window()

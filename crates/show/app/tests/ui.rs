@@ -546,6 +546,40 @@ fn a_learners_code_survives_leaving_the_lesson_and_the_lab() {
     assert_eq!(kept(&h), mine);
 }
 
+/// A paragraph of lesson text in a column `width` points wide.
+fn running_text(spans: &[kinolab_lessons::Span], width: f32) -> Harness<'static, bool> {
+    let spans = spans.to_vec();
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(width, 400.0))
+        .build_ui_state(
+            move |ui, ready: &mut bool| {
+                if *ready {
+                    let mut go = None;
+                    kinolab_app::lesson_view::inline_ui(ui, &spans, 16.0, false, &mut go);
+                } else {
+                    kinolab_widgets::theme::install(ui.ctx());
+                    *ready = true;
+                }
+            },
+            false,
+        );
+    h.run_steps(2);
+    h
+}
+
+/// Every node with text (a label's text is its accesskit value) and its box.
+fn text_boxes(h: &Harness<'_, bool>) -> Vec<(String, egui::accesskit::Rect)> {
+    h.query_all(egui_kittest::kittest::by())
+        .filter_map(|n| {
+            let node = n.accesskit_node();
+            Some((
+                node.value().or(node.label())?.to_string(),
+                node.bounding_box()?,
+            ))
+        })
+        .collect()
+}
+
 #[test]
 fn punctuation_after_inline_code_never_starts_a_line_alone() {
     let text =
@@ -553,32 +587,10 @@ fn punctuation_after_inline_code_never_starts_a_line_alone() {
     let spans = kinolab_lessons::parse_inline("test.md", 1, text).unwrap();
     // From a column that holds `planner.map` and its comma on one row.
     for width in (150..=420).step_by(3) {
-        let spans = spans.clone();
-        let mut h = Harness::builder()
-            .with_size(egui::vec2(width as f32, 400.0))
-            .build_ui_state(
-                move |ui, ready: &mut bool| {
-                    if *ready {
-                        let mut go = None;
-                        kinolab_app::lesson_view::inline_ui(ui, &spans, 16.0, false, &mut go);
-                    } else {
-                        kinolab_widgets::theme::install(ui.ctx());
-                        *ready = true;
-                    }
-                },
-                false,
-            );
-        h.run_steps(2);
+        let h = running_text(&spans, width as f32);
         // A row of text (a one-row label, or one row of a longer one) that
         // begins with punctuation does not begin at the column's left edge.
-        let nodes: Vec<_> = h
-            .query_all(egui_kittest::kittest::by())
-            .filter_map(|n| {
-                let node = n.accesskit_node();
-                // A label's text is its accesskit value.
-                Some((node.value().or(node.label())?, node.bounding_box()?))
-            })
-            .collect();
+        let nodes = text_boxes(&h);
         let left = nodes
             .iter()
             .map(|(_, r)| r.x0)
@@ -595,4 +607,40 @@ fn punctuation_after_inline_code_never_starts_a_line_alone() {
         }
         assert!(seen >= 2, "at {width} px: {nodes:?}");
     }
+}
+
+#[test]
+fn an_emphasised_word_keeps_its_space_at_any_wrap() {
+    // egui slants italics to the right: without a correction the word's
+    // last letter leans into the space after it.
+    let text = "Cutting off gives zero, and without the min the pull is eight, \
+                a push *away* from the goal, and more words follow here.";
+    let spans = kinolab_lessons::parse_inline("test.md", 1, text).unwrap();
+    let mut starts_a_line = 0;
+    for width in (150..=420).step_by(4) {
+        let h = running_text(&spans, width as f32);
+        // One row of text each (a label's rows are its children).
+        let mut rows = text_boxes(&h);
+        rows.retain(|(_, r)| r.y1 - r.y0 < 24.0);
+        let left = rows.iter().map(|(_, r)| r.x0).fold(f64::INFINITY, f64::min);
+        let Some((_, away)) = rows.iter().find(|(t, _)| t == "away") else {
+            panic!("at {width} px no row holds `away`: {rows:?}");
+        };
+        let after = rows
+            .iter()
+            .find(|(t, r)| t.starts_with(" from") && (r.y0 - away.y0).abs() < 1.0);
+        if let Some((_, from)) = after {
+            assert!(
+                from.x0 >= away.x1 + 2.0,
+                "at {width} px ` from` starts at {:.1}, `away` ends at {:.1}",
+                from.x0,
+                away.x1
+            );
+            starts_a_line += usize::from(away.x0 <= left + 0.5);
+        }
+    }
+    assert!(
+        starts_a_line >= 3,
+        "the sweep never put `away` at a line start"
+    );
 }

@@ -36,6 +36,7 @@ pub mod link;
 pub mod locomotion;
 pub mod mechanism;
 pub mod player;
+pub mod probe;
 pub mod registry;
 pub mod theme;
 pub mod wheels;

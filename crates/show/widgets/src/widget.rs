@@ -277,20 +277,65 @@ pub fn control_grid(
 
 /// Content that cannot get narrower (a grid of numbers, a wide formula)
 /// scrolls sideways when the column is too narrow, instead of running off
-/// the screen's edge.
+/// the screen's edge. A solid scroll bar and a fade at the clipped edge say
+/// there is more (a phone shows no hover bar), and the up-and-down part of
+/// a drag that starts on it still scrolls the page.
 pub fn sideways<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -> R {
     let width = ui.available_width();
+    let scroll = std::mem::replace(
+        &mut ui.spacing_mut().scroll,
+        egui::style::ScrollStyle::solid(),
+    );
     // A page has several of these in one parent: each needs its own id.
-    egui::ScrollArea::horizontal()
+    let out = egui::ScrollArea::horizontal()
         .id_salt(ui.next_auto_id())
         .max_width(width)
         .show(ui, |ui| {
+            ui.spacing_mut().scroll = scroll;
             // Lay out for the column (centred content stays centred); only
             // what is wider than the column scrolls.
             ui.set_max_width(width);
             add(ui)
-        })
-        .inner
+        });
+    ui.spacing_mut().scroll = scroll;
+    let hidden_left = out.state.clamped_offset().x > 0.5;
+    let hidden_right =
+        out.content_size.x - out.state.clamped_offset().x > out.inner_rect.width() + 0.5;
+    let panel = ui.visuals().panel_fill;
+    if hidden_left {
+        edge_fade(ui.painter(), out.inner_rect, egui::Align::Min, panel);
+    }
+    if hidden_right {
+        edge_fade(ui.painter(), out.inner_rect, egui::Align::Max, panel);
+    }
+    let dragged = ui
+        .ctx()
+        .read_response(out.id.with("area"))
+        .is_some_and(|r| r.dragged());
+    if dragged {
+        let dy = ui.input(|i| i.pointer.delta().y);
+        ui.scroll_with_delta_animation(egui::vec2(0.0, dy), egui::style::ScrollAnimation::none());
+    }
+    out.inner
+}
+
+/// A band at one side of `rect` fading from clear to `color`: the sign
+/// that content goes on beyond that edge.
+fn edge_fade(painter: &egui::Painter, rect: egui::Rect, side: egui::Align, color: egui::Color32) {
+    let band = 28.0_f32.min(rect.width() / 4.0);
+    let (x_clear, x_solid) = match side {
+        egui::Align::Min => (rect.left() + band, rect.left()),
+        _ => (rect.right() - band, rect.right()),
+    };
+    let clear = egui::Color32::TRANSPARENT;
+    let mut mesh = egui::Mesh::default();
+    mesh.colored_vertex(egui::pos2(x_clear, rect.top()), clear);
+    mesh.colored_vertex(egui::pos2(x_solid, rect.top()), color);
+    mesh.colored_vertex(egui::pos2(x_clear, rect.bottom()), clear);
+    mesh.colored_vertex(egui::pos2(x_solid, rect.bottom()), color);
+    mesh.add_triangle(0, 1, 2);
+    mesh.add_triangle(1, 2, 3);
+    painter.add(mesh);
 }
 
 /// A status text whose length changes with what the learner does, in a
@@ -354,5 +399,77 @@ mod tests {
         let not_yet = Feedback::not_yet("ändern: one slot");
         assert_eq!(feedback_text(&not_yet), "Ändern: one slot");
         assert_eq!(feedback_text(&Feedback::not_yet("  ")), "");
+    }
+
+    /// A page of text with a table wider than the screen in the middle.
+    fn page_with_a_wide_table(ui: &mut egui::Ui) {
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            for i in 0..12 {
+                ui.label(format!("line {i} above"));
+            }
+            sideways(ui, |ui| {
+                ui.add_sized([900.0, 80.0], egui::Label::new("a wide table"));
+            });
+            for i in 0..40 {
+                ui.label(format!("line {i} below"));
+            }
+        });
+    }
+
+    #[test]
+    fn a_drag_up_that_starts_on_a_wide_table_scrolls_the_page() {
+        use egui_kittest::kittest::Queryable as _;
+        let mut h = egui_kittest::Harness::builder()
+            .with_size(egui::vec2(320.0, 400.0))
+            .build_ui_state(
+                |ui, ready: &mut bool| {
+                    if *ready {
+                        page_with_a_wide_table(ui);
+                    } else {
+                        crate::theme::install(ui.ctx());
+                        *ready = true;
+                    }
+                },
+                false,
+            );
+        h.run_steps(2);
+        let table = h.get_by_label("a wide table").rect().center();
+        let top = |h: &egui_kittest::Harness<'_, bool>| h.get_by_label("line 0 above").rect().top();
+        let before = top(&h);
+        // What a browser sends for a finger: touch events and the pointer
+        // events egui makes of them.
+        let finger = |h: &mut egui_kittest::Harness<'_, bool>, phase, pos| {
+            h.event(egui::Event::Touch {
+                device_id: egui::TouchDeviceId(1),
+                id: egui::TouchId(1),
+                phase,
+                pos,
+                force: None,
+            });
+            match phase {
+                egui::TouchPhase::Move => h.event(egui::Event::PointerMoved(pos)),
+                _ => {
+                    h.event(egui::Event::PointerMoved(pos));
+                    h.event(egui::Event::PointerButton {
+                        pos,
+                        button: egui::PointerButton::Primary,
+                        pressed: phase == egui::TouchPhase::Start,
+                        modifiers: egui::Modifiers::NONE,
+                    });
+                }
+            }
+            h.run_steps(1);
+        };
+        let press = egui::pos2(160.0, table.y);
+        finger(&mut h, egui::TouchPhase::Start, press);
+        for step in 1..=10 {
+            let at = press + egui::vec2(-4.0 * step as f32, -15.0 * step as f32);
+            finger(&mut h, egui::TouchPhase::Move, at);
+        }
+        let moved = top(&h) - before;
+        assert!(
+            moved < -120.0,
+            "the page moved {moved} px for a 150 px drag up"
+        );
     }
 }

@@ -99,6 +99,16 @@ pub struct Anchors {
 }
 
 impl Anchors {
+    /// Every port and service as a point a browser test can aim at.
+    fn publish(&self, ctx: &egui::Context) {
+        for (name, at) in &self.ports {
+            crate::probe::publish(ctx, &format!("port {name}"), *at);
+        }
+        for (name, at) in &self.services {
+            crate::probe::publish(ctx, &format!("service {name}"), *at);
+        }
+    }
+
     fn new(views: &[ComponentView], rects: &[Rect]) -> Self {
         let mut services = Vec::new();
         let mut ports = Vec::new();
@@ -175,6 +185,7 @@ pub fn show(ui: &mut egui::Ui, run: &LabRun, look: &mut Look) -> (Option<Action>
             let lost = theme::error_color(ui);
             draw_tokens(&painter, rt.trace(), rt.now(), &anchors, lost);
             action = interact(ui, &painter, look, &response, &anchors);
+            anchors.publish(ui.ctx());
             look.anchors = anchors;
             if side {
                 draw_robot_world(
