@@ -15,7 +15,8 @@
 //! - [`Model::collisions`] — bounding capsules, coarse to fine, tested in a
 //!   plane on parry2d;
 //! - [`catalogue`] — built-in arms and rigs; [`file`] — model files in DH,
-//!   transforms or zero-position form; [`report`] — the JSON the command
+//!   transforms or zero-position form; [`urdf`] — robots described in URDF,
+//!   the format ROS and its tools read; [`report`] — the JSON the command
 //!   line and the JS API print.
 
 pub mod catalogue;
@@ -31,6 +32,7 @@ pub mod report;
 mod shapes;
 pub mod special;
 mod steps;
+pub mod urdf;
 
 pub use compose::{Closure, Coupling, Group, LoopClosure};
 pub use error::FieldError;

@@ -36,6 +36,7 @@ pub mod fields;
 pub mod legs;
 pub mod mechanism;
 pub mod plans;
+pub mod robot;
 pub mod script;
 pub mod teach;
 pub mod wheels;

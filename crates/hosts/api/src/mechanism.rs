@@ -6,7 +6,7 @@
 
 use kinolab_common::FieldError;
 use kinolab_mechanism::{
-    Goal, Model, Obstacle, Options, Plane, Pose, Target, Vector3, catalogue, file, report,
+    Goal, Model, Obstacle, Options, Plane, Pose, Target, Vector3, catalogue, file, report, urdf,
 };
 use serde::{Deserialize, Serialize};
 
@@ -19,9 +19,14 @@ pub const MAX_MOUNTED_FILES: usize = 64;
 /// The deepest chain of files mounting files.
 pub const MAX_MOUNT_DEPTH: usize = 16;
 
-/// A model: a model file's text (its mounts read through `files`), or a
-/// catalogue id (`puma560` or `catalogue:puma560`).
+/// A model: a model file's text (its mounts read through `files`), a URDF
+/// file's text, or a catalogue id (`puma560` or `catalogue:puma560`).
 pub fn model(source: &Source, files: &mut dyn Files) -> Result<Model, Error> {
+    if let Source::Text(text) = source
+        && urdf::looks_like_xml(text)
+    {
+        return robot(source).map(|r| r.model);
+    }
     let mut mounts = Mounts {
         files,
         read: 0,
@@ -38,6 +43,11 @@ pub fn model(source: &Source, files: &mut dyn Files) -> Result<Model, Error> {
         (Err(_), Some(bound)) => Err(Error::input("model", FieldError::new("", bound))),
         (result, _) => result,
     }
+}
+
+/// A robot from a URDF file's text.
+pub fn robot(source: &Source) -> Result<urdf::Robot, Error> {
+    source.file_only("robot", "a URDF file", urdf::read)
 }
 
 /// Files read through mounts so far, and the bound hit, if one was.

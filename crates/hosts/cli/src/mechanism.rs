@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Subcommand;
 use kinolab_api::mechanism::{self, Ik, ObstacleSpec, On, Query};
+use kinolab_api::robot;
 use serde_json::Value;
 
 use crate::Failure;
@@ -28,13 +29,19 @@ pub(crate) enum Command {
     },
     /// Forward kinematics of a model file: the 4×4 pose of a frame (default: the tool).
     Fk {
-        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        /// A model file (`*.model.json`), a URDF file (`*.urdf`), or `catalogue:<id>`.
         model: PathBuf,
         #[command(flatten)]
         q: Joints,
-        /// A frame name: a joint's, `base`, `world` or `tool`.
+        /// URDF: some joints by name, the rest at zero: NAME=VALUE,...
+        #[arg(long, value_name = "NAME=VALUE,...", allow_hyphen_values = true)]
+        set: Option<String>,
+        /// A frame name: a joint's, `base`, `world` or `tool`; for URDF, a link.
         #[arg(long)]
         frame: Option<String>,
+        /// URDF: every link's pose instead of one frame.
+        #[arg(long, conflicts_with = "frame")]
+        all_frames: bool,
     },
     /// Inverse kinematics of a model file: joint values that put a frame at a target.
     Ik {
@@ -116,15 +123,53 @@ impl Joints {
 pub(crate) fn run(command: Command) -> Result<Value, Failure> {
     match command {
         Command::Mechanisms => ask(&mechanism::Mechanisms, None),
+        Command::Describe { model } if is_urdf(&model) => ask(
+            &robot::RobotDescribe {
+                robot: source(&model)?,
+            },
+            Some(&model),
+        ),
         Command::Describe { model } => on(&model, mechanism::Describe),
         Command::HomeState { model } => on(&model, mechanism::HomeState),
-        Command::Fk { model, q, frame } => on(
-            &model,
-            mechanism::Fk {
-                q: q.values()?,
+        Command::Fk {
+            model,
+            q,
+            set,
+            frame,
+            all_frames,
+        } if is_urdf(&model) => {
+            let joints = match set {
+                Some(set) => robot::Setting::Named(named_values(&set)?),
+                None => robot::Setting::All(q.values()?),
+            };
+            let fk = robot::RobotFk {
+                robot: source(&model)?,
+                joints,
                 frame,
-            },
-        ),
+                all_frames,
+            };
+            ask(&fk, Some(&model))
+        }
+        Command::Fk {
+            model,
+            q,
+            set,
+            frame,
+            all_frames,
+        } => {
+            if set.is_some() || all_frames {
+                return Err(Failure(
+                    "--set and --all-frames work on URDF files (`*.urdf`)".into(),
+                ));
+            }
+            on(
+                &model,
+                mechanism::Fk {
+                    q: q.values()?,
+                    frame,
+                },
+            )
+        }
         Command::Place { model, q } => on(&model, mechanism::Place { q: q.values()? }),
         Command::Jacobian { model, q, frame } => on(
             &model,
@@ -175,6 +220,30 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             on(&model, ik)
         }
     }
+}
+
+/// A file read as URDF: its name ends in `.urdf`.
+fn is_urdf(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("urdf"))
+}
+
+/// `NAME=VALUE,...` as name and value pairs.
+fn named_values(text: &str) -> Result<Vec<(String, f64)>, Failure> {
+    text.split(',')
+        .map(|pair| {
+            let (name, value) = pair
+                .split_once('=')
+                .ok_or_else(|| Failure(format!("--set: `{}` is not NAME=VALUE", pair.trim())))?;
+            match value.trim().parse::<f64>() {
+                Ok(v) if v.is_finite() => Ok((name.trim().to_owned(), v)),
+                _ => Err(Failure(format!(
+                    "--set: `{}` is not a finite number",
+                    value.trim()
+                ))),
+            }
+        })
+        .collect()
 }
 
 /// Ask `query` about the model in the file (or catalogue entry) `model`.

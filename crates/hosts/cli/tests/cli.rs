@@ -968,3 +968,55 @@ fn components_prints_the_trace_and_the_final_state() {
     );
     fails_with(&["components", &bad], "components[0].params.work");
 }
+
+/// The Panda arm's URDF as shipped with the lab.
+fn panda_urdf() -> String {
+    format!(
+        "{}/../../body/mechanism/robots/panda.urdf",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+#[test]
+fn fk_reads_a_urdf_file_by_joint_order_or_name() {
+    let panda = panda_urdf();
+    let described = json(&["describe", &panda]);
+    let movable = described["movable"].as_array().expect("movable");
+    assert_eq!(movable.len(), 8);
+    assert_eq!(movable[0], "panda_joint1");
+    let tip = described["tip"].as_str().expect("tip").to_owned();
+    // The same pose from all joints in order and from two of them by name.
+    let q = "0.3,0,0,-1.2,0,1.4,0,0";
+    let by_order = json(&["fk", &panda, "--q", q]);
+    assert_eq!(by_order["frame"], tip.as_str());
+    let by_name = json(&[
+        "fk",
+        &panda,
+        "--set",
+        "panda_joint1=0.3,panda_joint4=-1.2,panda_joint6=1.4",
+    ]);
+    assert_eq!(by_order, by_name);
+    // Link 1 turns about the base's z axis by joint 1 and sits 0.333 m up.
+    let link1 = json(&["fk", &panda, "--q", q, "--frame", "panda_link1"]);
+    assert!((link1["matrix"][0][0].as_f64().unwrap() - 0.3f64.cos()).abs() < 1e-12);
+    assert_eq!(link1["matrix"][2][3], 0.333);
+    let all = json(&["fk", &panda, "--q", q, "--all-frames"]);
+    assert_eq!(all["frames"]["panda_link1"], link1["matrix"]);
+    assert_eq!(all["frames"][&tip], by_order["matrix"]);
+    fails_with(
+        &["fk", &panda, "--q", "0,3,0,0,0,0,0,0"],
+        "--q: panda_joint2: 3 is outside the joint's limits",
+    );
+    fails_with(
+        &["fk", &panda, "--set", "elbow=1"],
+        "--set: `elbow` is not a movable joint",
+    );
+    let broken = robot_file(
+        "broken.urdf",
+        "<robot name=\"r\">\n<link name=\"a\"/>\n<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n</robot>",
+    );
+    fails_with(
+        &["fk", &broken, "--q", ""],
+        "broken.urdf: <joint name=\"j\"> (line 3): its child link `b` is not in the file",
+    );
+}

@@ -23,11 +23,12 @@ pub fn arg<T: DeserializeOwned>(name: &str, value: Value) -> Result<T, String> {
     serde_json::from_value(value).map_err(|e| format!("{name}: {e}"))
 }
 
-/// A file-like argument: an object or JSON text is the file's text; any
-/// other string is a name (`catalogue:<id>`, an id, a layout code).
+/// A file-like argument: an object, JSON text or XML text (a URDF file) is
+/// the file's text; any other string is a name (`catalogue:<id>`, an id, a
+/// layout code).
 pub fn source(value: Value) -> Source {
     match value {
-        Value::String(text) if text.trim_start().starts_with('{') => Source::Text(text),
+        Value::String(text) if text.trim_start().starts_with(['{', '<']) => Source::Text(text),
         Value::String(name) => Source::Named(name),
         other => Source::Text(other.to_string()),
     }

@@ -173,6 +173,15 @@ fn mechanisms_through_the_js_api() {
     let info = linkage.describe().unwrap();
     assert_eq!(get(&info, "dof").as_f64(), Some(3.0));
 
+    // A URDF file's text loads too: the Panda's seven arm joints and two
+    // fingers, the second following the first.
+    let urdf = include_str!("../../../body/mechanism/robots/panda.urdf");
+    let panda = kinolab_js::Mechanism::load(JsValue::from_str(urdf)).unwrap();
+    assert_eq!(get(&panda.describe().unwrap(), "dof").as_f64(), Some(9.0));
+    let link1 = panda.fk(vec![0.0; 9], Some("panda_link1".into())).unwrap();
+    let row = js_sys_get(&get(&link1, "matrix"), "2");
+    assert_eq!(js_sys_get(&row, "3").as_f64(), Some(0.333));
+
     let Err(bad) = kinolab_js::Mechanism::load(JsValue::from_str("catalogue:warp-drive")) else {
         panic!("accepted an unknown mechanism");
     };

@@ -271,6 +271,18 @@ pub const KERNELS: &[Kernel] = &[
         run: mechanism::fk_puma,
     },
     Kernel {
+        name: "mech_fk_panda_dh_flange",
+        run: mechanism::fk_panda_dh,
+    },
+    Kernel {
+        name: "mech_fk_panda_urdf_flange",
+        run: mechanism::fk_panda_urdf,
+    },
+    Kernel {
+        name: "mech_urdf_read_50_links",
+        run: mechanism::urdf_parse_50,
+    },
+    Kernel {
         name: "mech_fk_rover_all_frames",
         run: mechanism::fk_rover_all,
     },

@@ -103,6 +103,62 @@ pub fn fk_puma() -> f64 {
         .map_or(f64::NAN, |p| p.translation.vector.x + 1.0)
 }
 
+/// The Panda read from its URDF file, and its flange (`panda_link8`).
+pub fn panda_urdf() -> Option<&'static Arm> {
+    static PANDA: OnceLock<Option<Arm>> = OnceLock::new();
+    PANDA
+        .get_or_init(|| {
+            let robot = kinolab_mechanism::urdf::read(PANDA_URDF).ok()?;
+            let tool = robot.model.frame("panda_link8").ok()?;
+            Some(Arm {
+                model: robot.model,
+                tool,
+            })
+        })
+        .as_ref()
+}
+
+const PANDA_URDF: &str = include_str!("../../../body/mechanism/robots/panda.urdf");
+
+/// One Panda configuration: the seven arm joints (and, in the URDF, the
+/// fingers at zero).
+const PANDA_Q: [f64; 7] = [0.3, -0.5, 0.2, -1.8, 0.4, 1.6, -0.6];
+
+/// FK of the Panda's flange, the arm written as modified DH.
+pub fn fk_panda_dh() -> f64 {
+    panda()
+        .and_then(|a| a.model.pose(black_box(&PANDA_Q), &a.tool).ok())
+        .map_or(f64::NAN, |p| p.translation.vector.x + 1.0)
+}
+
+/// FK of the same flange, the arm read from its URDF file.
+pub fn fk_panda_urdf() -> f64 {
+    let mut q = [0.0; 9];
+    q[..7].copy_from_slice(&PANDA_Q);
+    panda_urdf()
+        .and_then(|a| a.model.pose(black_box(&q[..a.model.dof()]), &a.tool).ok())
+        .map_or(f64::NAN, |p| p.translation.vector.x + 1.0)
+}
+
+/// Read and build a 50-link chain from URDF text.
+pub fn urdf_parse_50() -> f64 {
+    static TEXT: OnceLock<String> = OnceLock::new();
+    let text = TEXT.get_or_init(|| {
+        let mut s = String::from("<robot name=\"chain\"><link name=\"l0\"/>\n");
+        for i in 1..=50 {
+            s += &format!(
+                "<link name=\"l{i}\"><collision><geometry><box size=\"0.1 0.05 0.05\"/></geometry></collision></link>\n\
+                 <joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/>\
+                 <origin xyz=\"0.1 0 0\" rpy=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/>\
+                 <limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n",
+                i - 1
+            );
+        }
+        s + "</robot>"
+    });
+    kinolab_mechanism::urdf::read(black_box(text)).map_or(f64::NAN, |r| r.model.dof() as f64)
+}
+
 /// All-frames FK of the rocker-bogie rover.
 pub fn fk_rover_all() -> f64 {
     static ROVER: OnceLock<Option<Model>> = OnceLock::new();
