@@ -148,7 +148,7 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
                 frame,
                 all_frames,
             };
-            ask(&fk, Some(&model))
+            ask(&fk, Some(&model)).map_err(|e| naming_the_file(e, &model))
         }
         Command::Fk {
             model,
@@ -226,6 +226,17 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
 fn is_urdf(path: &Path) -> bool {
     path.extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("urdf"))
+}
+
+/// A failure that names the file: a joint or a link is the file's, so a
+/// bad name or value says which file it was looked for in.
+fn naming_the_file(Failure(message): Failure, path: &Path) -> Failure {
+    let shown = path.display().to_string();
+    if message.starts_with(&shown) {
+        Failure(message)
+    } else {
+        Failure(format!("{shown}: {message}"))
+    }
 }
 
 /// `NAME=VALUE,...` as name and value pairs.

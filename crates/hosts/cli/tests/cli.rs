@@ -1005,11 +1005,11 @@ fn fk_reads_a_urdf_file_by_joint_order_or_name() {
     assert_eq!(all["frames"][&tip], by_order["matrix"]);
     fails_with(
         &["fk", &panda, "--q", "0,3,0,0,0,0,0,0"],
-        "--q: panda_joint2: 3 is outside the joint's limits",
+        "panda.urdf: --q: panda_joint2: 3 is outside the joint's limits",
     );
     fails_with(
         &["fk", &panda, "--set", "elbow=1"],
-        "--set: `elbow` is not a movable joint",
+        "panda.urdf: --set: `elbow` is not a movable joint",
     );
     let broken = robot_file(
         "broken.urdf",
