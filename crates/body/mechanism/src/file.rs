@@ -19,7 +19,7 @@ use serde::Deserialize;
 
 use crate::dh::{Convention, DhRow, chain_builder};
 use crate::error::{FieldError, finite};
-use crate::model::{JointKind, Model, ModelBuilder, Pose};
+use crate::model::{JointKind, Model, ModelBuilder, Pose, WORLD};
 
 /// How a file describes its joints.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -79,6 +79,9 @@ struct JointFile {
     /// The body this joint hangs from (a joint's name, `base` or
     /// `world`); the previous joint when left out.
     parent: Option<String>,
+    /// The body the joint moves, when not named after the joint (a URDF
+    /// link keeps its name).
+    child: Option<String>,
     /// Transforms: where the joint sits on its parent.
     origin: Option<PoseFile>,
     /// The joint's axis (unit length not required).
@@ -161,6 +164,9 @@ struct ModelFile {
     convention: Description,
     joints: Vec<JointFile>,
     base: Option<[[f64; 4]; 4]>,
+    /// The name of the body everything hangs from (default `world`): a
+    /// robot read from URDF keeps its root link's name.
+    root: Option<String>,
     /// The tool frame on the last joint's body; for the zero-position
     /// description, the tool's pose in the world with every joint at zero.
     tool: Option<[[f64; 4]; 4]>,
@@ -264,7 +270,9 @@ pub fn from_json_with(
                 .tool
                 .as_ref()
                 .map_or(Ok(Pose::identity()), |m| pose_from_matrix("tool", m))?;
-            chain_builder(&file.name, convention, &dh_rows(&file.joints)?, base, tool)?
+            let mut b = chain_builder(&file.name, convention, &dh_rows(&file.joints)?, base, tool)?;
+            b.bodies[0].name = root_name(&file);
+            b
         }
         Description::Transforms | Description::ZeroPosition => tree(&file, base)?,
     };
@@ -372,6 +380,7 @@ fn dh_rows(joints: &[JointFile]) -> Result<Vec<DhRow>, FieldError> {
             i,
             &[
                 ("parent", j.parent.is_some()),
+                ("child", j.child.is_some()),
                 ("origin", j.origin.is_some()),
                 ("axis", j.axis.is_some()),
                 ("point", j.point.is_some()),
@@ -400,10 +409,20 @@ fn unit_axis(field: &str, v: [f64; 3]) -> Result<Unit<Vector3<f64>>, FieldError>
         .ok_or_else(|| FieldError::new(field, "an axis cannot be zero (or shorter than 1e-9)"))
 }
 
+fn root_name(file: &ModelFile) -> String {
+    file.root.clone().unwrap_or_else(|| WORLD.to_owned())
+}
+
 /// Transforms and zero-position descriptions: a tree hung from `base`.
 fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, FieldError> {
     let zero_position = file.convention == Description::ZeroPosition;
     let mut b = ModelBuilder::new(file.name.clone());
+    b.bodies[0].name = root_name(file);
+    // The joints keep the order the file gives them (parents first), as a
+    // URDF file's do; a file that mounts others is ordered by depth, like
+    // the catalogue's assemblies, so a hexapod file and the catalogue's
+    // hexapod take their joint values in the same order.
+    b.keep_order = file.mounts.is_empty();
     // A `base` body only when the file places one.
     let mut previous = match file.base {
         Some(_) => b.fixed_base(base),
@@ -463,6 +482,9 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, FieldError> {
             after,
             limits(i, j)?,
         );
+        if let Some(child) = &j.child {
+            b.bodies[previous].name = child.clone();
+        }
     }
     let tool = match &file.tool {
         None => Pose::identity(),
@@ -485,7 +507,7 @@ fn tree(file: &ModelFile, base: Pose) -> Result<ModelBuilder, FieldError> {
 }
 
 fn pose_json(p: &Pose) -> serde_json::Value {
-    let (r, pi, y) = p.rotation.euler_angles();
+    let [r, pi, y] = crate::model::rpy(&p.rotation);
     let t = p.translation.vector;
     serde_json::json!({ "xyz": [t.x, t.y, t.z], "rpy_deg": [r.to_degrees(), pi.to_degrees(), y.to_degrees()] })
 }
@@ -515,6 +537,9 @@ pub fn to_json(model: &Model) -> String {
             });
             if j.post != Pose::identity() {
                 v["after"] = pose_json(&j.post);
+            }
+            if body(j.child) != j.name {
+                v["child"] = json!(body(j.child));
             }
             let prismatic = j.kind == JointKind::Prismatic;
             if j.offset != 0.0 {
@@ -546,7 +571,7 @@ pub fn to_json(model: &Model) -> String {
             .variable_joint(v)
             .map_or(String::new(), |j| j.name.clone())
     };
-    let file = json!({
+    let mut file = json!({
         "name": model.name(),
         "convention": "transforms",
         "joints": joints,
@@ -556,6 +581,9 @@ pub fn to_json(model: &Model) -> String {
         "shapes": model.shapes().iter().map(|s| json!({ "body": body(s.body), "a": [s.a.x, s.a.y, s.a.z], "b": [s.b.x, s.b.y, s.b.z], "radius": s.radius })).collect::<Vec<_>>(),
         "ignore": model.ignored_pairs().iter().map(|&(a, b)| json!([body(a), body(b)])).collect::<Vec<_>>(),
     });
+    if let Some(root) = model.bodies().first().filter(|b| b.name != WORLD) {
+        file["root"] = json!(root.name);
+    }
     serde_json::to_string_pretty(&file).unwrap_or_default()
 }
 

@@ -3,7 +3,7 @@
 //! parts fit, never where they are — so any number of views and solvers can
 //! share one model, each with its own joint values (a [`crate::State`]).
 
-use nalgebra::{Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Rotation3, Translation3, Unit, UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
 use crate::compose::{Coupling, Group, LoopClosure, PendingCoupling, PendingLoop};
@@ -12,6 +12,23 @@ use crate::shapes::Shape;
 
 /// A rigid transform: rotation and translation.
 pub type Pose = Isometry3<f64>;
+
+/// Roll, pitch and yaw with `m = Rz(yaw) · Ry(pitch) · Rx(roll)` (URDF's
+/// convention, and the model files'). Yaw comes first from the first column; roll and pitch are
+/// then read from `Rz(-yaw) · m`, which keeps them exact even where pitch is
+/// near ±90° and yaw is poorly defined.
+pub(crate) fn rpy(rotation: &UnitQuaternion<f64>) -> [f64; 3] {
+    let m = rotation.to_rotation_matrix().into_inner();
+    let yaw = if m[(1, 0)].hypot(m[(0, 0)]) < 1e-12 {
+        0.0
+    } else {
+        m[(1, 0)].atan2(m[(0, 0)])
+    };
+    let rest = Rotation3::from_axis_angle(&Vector3::z_axis(), -yaw).matrix() * m;
+    let roll = (-rest[(1, 2)]).atan2(rest[(1, 1)]);
+    let pitch = (-rest[(2, 0)]).atan2(rest[(0, 0)]);
+    [roll, pitch, yaw]
+}
 
 /// How a joint lets its child body move.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -146,6 +163,9 @@ pub struct ModelBuilder {
     pub(crate) shapes: Vec<Shape>,
     pub(crate) ignored: Vec<(usize, usize)>,
     pub(crate) groups: Vec<Group>,
+    /// Keep the joints in the order given (parents still first) rather
+    /// than by depth: a URDF file's order is the order users know.
+    pub(crate) keep_order: bool,
 }
 
 /// The world frame's name.
@@ -374,10 +394,16 @@ impl ModelBuilder {
         Ok(chains)
     }
 
-    /// Order joints by depth so parents come first, and renumber the chains.
+    /// Order joints so parents come first (by depth, or as given where a
+    /// file's order is kept), and renumber the chains.
     fn depth_order(&self, mut chains: Vec<Vec<usize>>) -> (Vec<Joint>, Vec<Vec<usize>>) {
-        let mut order: Vec<usize> = (0..self.joints.len()).collect();
-        order.sort_by_key(|&j| chains[self.joints[j].child].len());
+        let order = if self.keep_order {
+            self.given_order()
+        } else {
+            let mut order: Vec<usize> = (0..self.joints.len()).collect();
+            order.sort_by_key(|&j| chains[self.joints[j].child].len());
+            order
+        };
         let mut new_index = vec![0; self.joints.len()];
         for (new, &old) in order.iter().enumerate() {
             new_index[old] = new;
@@ -387,6 +413,31 @@ impl ModelBuilder {
             *j = new_index[*j];
         }
         (joints, chains)
+    }
+}
+
+impl ModelBuilder {
+    /// The joints as given, except that a joint listed before its parent
+    /// joint waits for it: each step takes the first joint whose parent
+    /// body is placed (the tree is checked, so every joint is taken).
+    fn given_order(&self) -> Vec<usize> {
+        let n = self.joints.len();
+        let mut placed = vec![false; self.bodies.len()];
+        placed[0] = true;
+        let mut taken = vec![false; n];
+        let mut order = Vec::with_capacity(n);
+        while order.len() < n {
+            let Some(j) = (0..n).find(|&j| !taken[j] && placed[self.joints[j].parent]) else {
+                break;
+            };
+            taken[j] = true;
+            placed[self.joints[j].child] = true;
+            order.push(j);
+        }
+        // Never short: a joint left over (impossible in a checked tree)
+        // keeps its place at the end.
+        order.extend((0..n).filter(|&j| !taken[j]));
+        order
     }
 }
 
@@ -405,6 +456,17 @@ impl Model {
 
     pub fn frames(&self) -> &[Frame] {
         &self.frames
+    }
+
+    /// The body at the end of the longest chain from the world (the first
+    /// such body when chains tie): a robot's hand or foot when its file
+    /// names no tool.
+    pub fn tip(&self) -> &str {
+        self.bodies
+            .iter()
+            .enumerate()
+            .max_by_key(|&(b, _)| (self.chains[b].len(), std::cmp::Reverse(b)))
+            .map_or(WORLD, |(_, body)| body.name.as_str())
     }
 
     /// Number of joint variables (the state's length).

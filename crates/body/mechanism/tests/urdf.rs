@@ -297,3 +297,26 @@ fn a_cut_or_garbled_real_file_is_an_error_never_a_panic() {
     }
     assert!(refused > 100, "only {refused} cut files refused");
 }
+
+/// The model's own joint order is the file's (parents still first), so a
+/// viewer's sliders and a saved model file list Solo's joints leg by leg,
+/// as the file does, not hip joints first.
+#[test]
+fn the_models_variables_follow_the_file_order() {
+    let robot = urdf::read(&robot_file("solo12")).expect("reads");
+    let model = &robot.model;
+    let variables: Vec<&str> = (0..model.dof())
+        .filter_map(|v| model.variable_joint(v).map(|j| j.name.as_str()))
+        .collect();
+    let driven: Vec<&str> = robot.driven().collect();
+    assert_eq!(variables, driven);
+    assert_eq!(&variables[..4], ["FL_HAA", "FL_HFE", "FL_KFE", "FR_HAA"]);
+    // A child listed before its parent still comes after it.
+    let text = "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>\
+        <joint name=\"late\" type=\"continuous\"><parent link=\"b\"/><child link=\"c\"/></joint>\
+        <joint name=\"early\" type=\"continuous\"><parent link=\"a\"/><child link=\"b\"/></joint></robot>";
+    let r = urdf::read(text).expect("reads");
+    let names: Vec<&str> = r.model.joints().iter().map(|j| j.name.as_str()).collect();
+    assert_eq!(names, ["early", "late"]);
+    assert_eq!(r.driven().collect::<Vec<_>>(), ["late", "early"]);
+}

@@ -4,10 +4,10 @@
 
 use std::collections::BTreeMap;
 
-use kinolab_mechanism::{file::matrix_of, report, urdf::Robot};
+use kinolab_mechanism::{file::matrix_of, report, urdf, urdf::Robot};
 use serde::Serialize;
 
-use crate::mechanism::robot;
+use crate::mechanism::{Ik, Query, model, robot};
 use crate::{Error, Files, Operation, Source};
 
 /// How a robot's joints are set.
@@ -115,6 +115,61 @@ impl Operation for RobotDescribe {
             tip: robot.tip().to_owned(),
             notices: robot.notices.clone(),
             model: report::describe(&robot.model),
+        })
+    }
+}
+
+/// `kinolab ik ROBOT.urdf`: IK with the seed and the answer in `--q` order
+/// (the driven joints in file order) and the frame defaulting to the tip.
+#[derive(Debug, Clone)]
+pub struct RobotIk {
+    pub robot: Source,
+    pub ik: Ik,
+}
+
+impl Operation for RobotIk {
+    type Report = report::InverseReport;
+    fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
+        let robot = robot(&self.robot)?;
+        let seed = match &self.ik.seed {
+            Some(q) => Some(
+                robot
+                    .state(q)
+                    .map_err(|e| Error::argument("seed", e.message))?,
+            ),
+            None => None,
+        };
+        let ik = Ik {
+            frame: Some(self.ik.frame.clone().unwrap_or(robot.tip().to_owned())),
+            seed,
+            ..self.ik.clone()
+        };
+        let mut answer = ik.ask(&robot.model)?;
+        answer.q = robot.values(&answer.q);
+        Ok(answer)
+    }
+}
+
+/// `kinolab export-urdf MODEL`: the model as URDF text, and what URDF
+/// could not say.
+#[derive(Debug, Clone)]
+pub struct ExportUrdf {
+    pub model: Source,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Exported {
+    pub urdf: String,
+    pub notices: Vec<String>,
+}
+
+impl Operation for ExportUrdf {
+    type Report = Exported;
+    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
+        let written = urdf::write(&model(&self.model, files)?);
+        Ok(Exported {
+            urdf: written.text,
+            notices: written.notices,
         })
     }
 }

@@ -56,6 +56,11 @@ enum Command {
     Components(components::Command),
     #[command(flatten)]
     Teach(teach::Command),
+    /// A model as URDF for ROS and its tools, printed; what URDF cannot say goes to stderr.
+    ExportUrdf {
+        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        model: std::path::PathBuf,
+    },
     /// Graded code exercises: list them, check a learner's script, grade a class.
     Script {
         #[command(subcommand)]
@@ -83,6 +88,7 @@ fn run(command: Command) -> Result<Printed, Failure> {
         Command::Components(c) => components::run(c),
         Command::Teach(c) => teach::run(c),
         Command::Script { command } => return script::run(command),
+        Command::ExportUrdf { model } => return mechanism::export_urdf(&model),
     }
     .map(Printed::Json)
 }

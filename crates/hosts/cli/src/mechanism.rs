@@ -9,9 +9,9 @@ use kinolab_api::mechanism::{self, Ik, ObstacleSpec, On, Query};
 use kinolab_api::robot;
 use serde_json::Value;
 
-use crate::Failure;
 use crate::args::{fixed, numbers};
 use crate::ask::{ask, source};
+use crate::{Failure, Printed, output};
 
 #[derive(Debug, Subcommand)]
 pub(crate) enum Command {
@@ -45,7 +45,7 @@ pub(crate) enum Command {
     },
     /// Inverse kinematics of a model file: joint values that put a frame at a target.
     Ik {
-        /// A model file (`*.model.json`), or `catalogue:<id>`.
+        /// A model file (`*.model.json`), a URDF file (`*.urdf`: seed and answer in `--q` order), or `catalogue:<id>`.
         model: PathBuf,
         /// Target position, m: X,Y,Z
         #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
@@ -56,7 +56,7 @@ pub(crate) enum Command {
         /// Starting joint values: Q1,...,QN (default: the home state)
         #[arg(long, value_name = "Q1,...,QN", allow_hyphen_values = true)]
         seed: Option<String>,
-        /// The frame to place (default: the tool).
+        /// The frame to place (default: the tool; for URDF, the end of the longest chain).
         #[arg(long)]
         frame: Option<String>,
         /// Give the target in this frame instead of the world.
@@ -217,9 +217,32 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
                 max_iterations,
                 restarts,
             };
+            if is_urdf(&model) {
+                let ik = robot::RobotIk {
+                    robot: source(&model)?,
+                    ik,
+                };
+                return ask(&ik, Some(&model)).map_err(|e| naming_the_file(e, &model));
+            }
             on(&model, ik)
         }
     }
+}
+
+/// `kinolab export-urdf MODEL`: the URDF text on stdout, each thing URDF
+/// could not say as a note on stderr.
+pub(crate) fn export_urdf(model: &Path) -> Result<Printed, Failure> {
+    let export = robot::ExportUrdf {
+        model: source(model)?,
+    };
+    let answer = ask(&export, Some(model))?;
+    let notices = answer["notices"].as_array().cloned().unwrap_or_default();
+    for notice in notices.iter().filter_map(Value::as_str) {
+        output::note(notice);
+    }
+    Ok(Printed::Text(
+        answer["urdf"].as_str().unwrap_or_default().to_owned(),
+    ))
 }
 
 /// A file read as URDF: its name ends in `.urdf`.

@@ -49,6 +49,11 @@ pub(crate) fn fail(message: &str) -> ExitCode {
     ExitCode::from(BAD_INPUT)
 }
 
+/// A remark beside the answer: one line on stderr.
+pub(crate) fn note(message: &str) {
+    say(&format!("note: {message}"));
+}
+
 /// One line on stderr; if even that cannot be written there is no one to tell.
 fn say(message: &str) {
     let _ = writeln!(std::io::stderr().lock(), "kinolab: {}", one_line(message));

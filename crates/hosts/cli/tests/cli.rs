@@ -1020,3 +1020,63 @@ fn fk_reads_a_urdf_file_by_joint_order_or_name() {
         "broken.urdf: <joint name=\"j\"> (line 3): its child link `b` is not in the file",
     );
 }
+
+/// IK on a URDF answers in `--q` order and puts the tip where it was asked:
+/// FK of the answer lands on the target.
+#[test]
+fn ik_on_a_urdf_answers_in_q_order() {
+    let panda = panda_urdf();
+    let target = [0.4, 0.1, 0.5];
+    let answer = json(&["ik", &panda, "--position", "0.4,0.1,0.5"]);
+    assert_eq!(answer["converged"], true);
+    let q: Vec<String> = answer["q"]
+        .as_array()
+        .expect("q")
+        .iter()
+        .map(|v| v.as_f64().expect("number").to_string())
+        .collect();
+    assert_eq!(q.len(), 8, "the Panda's eight movable joints");
+    let placed = json(&["fk", &panda, "--q", &q.join(",")]);
+    for (i, want) in target.iter().enumerate() {
+        let got = placed["matrix"][i][3].as_f64().expect("number");
+        assert!((got - want).abs() < 1e-6, "{i}: {got} vs {want}");
+    }
+    fails_with(
+        &["ik", &panda, "--position", "0.4,0.1,0.5", "--seed", "1,2"],
+        "panda.urdf: --seed: `panda` has 8 movable joints",
+    );
+}
+
+/// A catalogue model goes out as URDF and comes back with the same tool
+/// pose; a loop that URDF cannot close is a note on stderr.
+#[test]
+fn export_urdf_writes_a_file_fk_reads_back() {
+    let (code, urdf, stderr) = kinolab(&["export-urdf", "catalogue:puma560"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
+    assert!(urdf.starts_with("<?xml"), "{urdf}");
+    let path = robot_file("puma.urdf", &urdf);
+    let q = "0.1,-0.4,0.3,0.8,-0.5,1.1";
+    let back = json(&["fk", &path, "--q", q, "--frame", "tool"]);
+    let model = json(&["fk", "catalogue:puma560", "--q", q]);
+    for r in 0..3 {
+        for c in 0..4 {
+            let (a, b) = (
+                back["matrix"][r][c].as_f64(),
+                model["matrix"][r][c].as_f64(),
+            );
+            assert!((a.unwrap() - b.unwrap()).abs() < 1e-12, "[{r}][{c}]");
+        }
+    }
+    let (code, _, stderr) = kinolab(&["export-urdf", "catalogue:four-bar"]);
+    assert_eq!(code, 0);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("note: loop `four-bar loop` is left open"),
+        "{stderr}"
+    );
+    fails_with(
+        &["export-urdf", "catalogue:nope"],
+        "no built-in mechanism `nope`",
+    );
+}

@@ -5,6 +5,7 @@
 //! puma.fk([0, 0, 0, 0, 0, 0]).matrix[0][3];            // 0.4521
 //! const s = puma.ik({ position: [0.5, 0.1, 0.9] });      // { q, converged, … }
 //! puma.collide(s.q, "side", [{ circle: [0.6, 0.8, 0.1] }]).colliding;
+//! puma.toUrdf().urdf;                                      // for ROS
 //! ```
 //!
 //! The object holds only the model, which never changes; every call takes
@@ -42,6 +43,13 @@ impl Mechanism {
     /// loops, shapes, solvers }`.
     pub fn describe(&self) -> Result<JsValue, JsError> {
         to_js(calls::on(&self.model, &Describe))
+    }
+
+    /// What `kinolab export-urdf` writes, and what URDF could not say:
+    /// `{ urdf, notices }`.
+    #[wasm_bindgen(js_name = toUrdf)]
+    pub fn to_urdf(&self) -> Result<JsValue, JsError> {
+        to_js(calls::to_urdf(&self.model))
     }
 
     /// What `kinolab home-state` prints: the zero state clamped into the

@@ -181,6 +181,20 @@ fn mechanisms_through_the_js_api() {
     let link1 = panda.fk(vec![0.0; 9], Some("panda_link1".into())).unwrap();
     let row = js_sys_get(&get(&link1, "matrix"), "2");
     assert_eq!(js_sys_get(&row, "3").as_f64(), Some(0.333));
+    // The robots shipped with the lab load by id: the UR5's six joints.
+    let ur5 = kinolab_js::Mechanism::load(JsValue::from_str("catalogue:ur5")).unwrap();
+    assert_eq!(get(&ur5.describe().unwrap(), "dof").as_f64(), Some(6.0));
+    // And any model goes out as URDF that loads back.
+    let four_bar = kinolab_js::Mechanism::load(JsValue::from_str("catalogue:four-bar")).unwrap();
+    let written = four_bar.to_urdf().unwrap();
+    let notices = get(&written, "notices");
+    assert_eq!(
+        get(&notices, "length").as_f64(),
+        Some(1.0),
+        "the loop is left open"
+    );
+    let back = kinolab_js::Mechanism::load(get(&written, "urdf")).unwrap();
+    assert_eq!(get(&back.describe().unwrap(), "dof").as_f64(), Some(3.0));
 
     let Err(bad) = kinolab_js::Mechanism::load(JsValue::from_str("catalogue:warp-drive")) else {
         panic!("accepted an unknown mechanism");

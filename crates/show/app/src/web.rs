@@ -166,3 +166,42 @@ pub fn show_fatal(message: &str) {
         loading.remove();
     }
 }
+
+/// Open the browser's file dialog for a widget; the chosen file's bytes go
+/// back to it through [`kinolab_widgets::open::deliver`].
+pub fn pick(
+    ctx: &egui::Context,
+    request: kinolab_widgets::open::PickRequest,
+) -> Result<(), wasm_bindgen::JsValue> {
+    use wasm_bindgen::JsCast;
+    use wasm_bindgen::closure::Closure;
+    let document = window().and_then(|w| w.document()).ok_or("no document")?;
+    let input: web_sys::HtmlInputElement = document.create_element("input")?.dyn_into()?;
+    input.set_type("file");
+    input.set_accept(&request.accept);
+    let chosen = input.clone();
+    let ctx = ctx.clone();
+    let on_change = Closure::once(move || {
+        let Some(file) = chosen.files().and_then(|list| list.get(0)) else {
+            return;
+        };
+        wasm_bindgen_futures::spawn_local(async move {
+            let Ok(buffer) = wasm_bindgen_futures::JsFuture::from(file.array_buffer()).await else {
+                log::warn!("could not read {}", file.name());
+                return;
+            };
+            let bytes = js_sys::Uint8Array::new(&buffer).to_vec();
+            let opened = kinolab_widgets::open::OpenedFile {
+                name: file.name(),
+                bytes,
+            };
+            kinolab_widgets::open::deliver(&ctx, request.widget, opened);
+        });
+    });
+    input.set_onchange(Some(on_change.as_ref().unchecked_ref()));
+    // The dialog may stay open for minutes: the closure lives as long as
+    // the page (one small closure per dialog opened).
+    on_change.forget();
+    input.click();
+    Ok(())
+}

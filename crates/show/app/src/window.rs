@@ -15,6 +15,21 @@ impl eframe::App for KinolabApp {
         for file in kinolab_widgets::export::take_save_requests(ui.ctx()) {
             save(&file);
         }
+        for file in ui.ctx().input(|i| i.raw.dropped_files.clone()) {
+            read_dropped(ui.ctx(), file);
+        }
+        for request in kinolab_widgets::open::take_pick_requests(ui.ctx()) {
+            #[cfg(target_arch = "wasm32")]
+            if let Err(e) = crate::web::pick(ui.ctx(), request) {
+                log::warn!("could not open the file dialog: {e:?}");
+            }
+            // A native window opens files dropped on it.
+            #[cfg(not(target_arch = "wasm32"))]
+            log::info!(
+                "file dialogs are the browser's; drop {} files on the window",
+                request.accept
+            );
+        }
         #[cfg(target_arch = "wasm32")]
         crate::web::after_frame(self);
         #[cfg(not(target_arch = "wasm32"))]
@@ -27,6 +42,31 @@ impl eframe::App for KinolabApp {
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         storage.set_string(progress::STORAGE_KEY, self.progress_json());
+    }
+}
+
+/// Read a file dropped on the window and hand it to the widgets.
+fn read_dropped(ctx: &egui::Context, file: egui::DroppedFileHandle) {
+    use kinolab_widgets::open::{OpenedFile, deliver_dropped};
+    let name = file
+        .path()
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    #[cfg(target_arch = "wasm32")]
+    {
+        let ctx = ctx.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            match file.bytes_async().await {
+                Ok(bytes) => deliver_dropped(&ctx, OpenedFile { name, bytes }),
+                Err(e) => log::warn!("could not read {name}: {e}"),
+            }
+        });
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    match file.bytes() {
+        Ok(bytes) => deliver_dropped(ctx, OpenedFile { name, bytes }),
+        Err(e) => log::warn!("could not read {name}: {e}"),
     }
 }
 

@@ -16,8 +16,8 @@
 //! Shared pieces: [`widget`] (the trait every widget implements and the
 //! small helpers they share), [`draw`] (one world↔screen view, draggable
 //! handles with accessible names, grids, a 3D camera), [`link`] (widget
-//! state in a link), [`export`] (files a widget asks the host to save) and
-//! [`theme`]. Every number a widget shows comes from a core crate.
+//! state in a link), [`export`] (files a widget asks the host to save),
+//! [`open`] (files the learner drops or picks) and [`theme`]. Every number a widget shows comes from a core crate.
 //!
 //! Nothing here knows about windows or browsers: the lab's shell
 //! (`kinolab-app`) hosts these widgets, as egui's demo app hosts its demos.
@@ -35,6 +35,7 @@ pub mod fields;
 pub mod link;
 pub mod locomotion;
 pub mod mechanism;
+pub mod open;
 pub mod player;
 pub mod probe;
 pub mod registry;

@@ -1,6 +1,7 @@
 //! Built-in mechanisms: arms described by DH tables, and rigs built from
 //! parts (a rover with a rocker-bogie, a rover carrying an arm, a hexapod
-//! from one leg, a four-bar linkage).
+//! from one leg, a four-bar linkage), and real robots read from the URDF
+//! files shipped with the lab.
 
 mod arms;
 mod rigs;
@@ -57,7 +58,28 @@ pub const CATALOGUE: &[(&str, &str, &str)] = &[
         "Four-bar linkage",
         "a crank-rocker: a closed chain kept shut by a loop constraint",
     ),
+    (
+        "ur5",
+        "UR5 (URDF)",
+        "Universal Robots' six-joint arm, read from its URDF file",
+    ),
+    (
+        "panda-urdf",
+        "Franka Panda (URDF)",
+        "the Panda as its maker describes it in URDF: seven joints and a gripper whose second finger mimics the first",
+    ),
+    (
+        "solo12",
+        "Solo 12 quadruped (URDF)",
+        "an open-source quadruped, three joints a leg, read from its URDF file",
+    ),
 ];
+
+/// A robot from a URDF file shipped with the lab (see the README for
+/// their licences).
+fn shipped(text: &str) -> Result<Model, FieldError> {
+    crate::urdf::read(text).map(|robot| robot.model)
+}
 
 /// A built-in mechanism by id.
 pub fn mechanism(id: &str) -> Result<Model, FieldError> {
@@ -71,6 +93,9 @@ pub fn mechanism(id: &str) -> Result<Model, FieldError> {
         "rover-arm" => rigs::rover_arm(),
         "hexapod" => rigs::hexapod(),
         "four-bar" => rigs::four_bar(rigs::FOUR_BAR),
+        "ur5" => shipped(include_str!("../../robots/ur5.urdf")),
+        "panda-urdf" => shipped(include_str!("../../robots/panda.urdf")),
+        "solo12" => shipped(include_str!("../../robots/solo12.urdf")),
         other => {
             let known: Vec<&str> = CATALOGUE.iter().map(|(id, _, _)| *id).collect();
             Err(FieldError::new(

@@ -16,6 +16,7 @@ pub(super) fn robot(d: Description) -> Result<Robot, FieldError> {
     let parents = parent_joints(&d, &links)?;
     let root = root(&d, &parents)?;
     let mut builder = ModelBuilder::new(d.name.clone());
+    builder.keep_order = true;
     // Body 0 is the world: here, the root link.
     let mut body_of = vec![0; d.links.len()];
     builder.bodies[0].name = d.links[root].at.name.clone();
@@ -56,13 +57,7 @@ pub(super) fn robot(d: Description) -> Result<Robot, FieldError> {
         .filter(|j| j.mimic.is_none() && !matches!(j.kind, Kind::Fixed | Kind::Free(_)))
         .filter_map(|j| model.variable(&j.at.name))
         .collect();
-    let tip = model
-        .bodies()
-        .iter()
-        .enumerate()
-        .max_by_key(|&(b, _)| (model.chains[b].len(), std::cmp::Reverse(b)))
-        .map(|(_, body)| body.name.clone())
-        .unwrap_or_default();
+    let tip = model.tip().to_owned();
     Ok(Robot {
         model,
         driven,

@@ -14,9 +14,16 @@
 //!
 //! The joints a user sets are the file's moving joints without `mimic`, in
 //! the order the file lists them ([`Robot::state`]).
+//!
+//! [`write`] goes the other way: any model as URDF that reads back to the
+//! same frames (a DH row's transform after the motion becomes a fixed
+//! joint; a closed loop is left open, with a notice).
 
 mod build;
 mod read;
+mod write;
+
+pub use write::{Written, write};
 
 use crate::error::FieldError;
 use crate::model::Model;
@@ -98,6 +105,14 @@ impl Robot {
         }
         self.model.apply_couplings(&mut state);
         Ok(state)
+    }
+
+    /// The driven joints' values in a model state, in file order.
+    pub fn values(&self, state: &[f64]) -> Vec<f64> {
+        self.driven
+            .iter()
+            .map(|&v| state.get(v).copied().unwrap_or(0.0))
+            .collect()
     }
 
     /// The model's state with the named driven joints set and the others at

@@ -12,16 +12,19 @@
 
 mod bounds;
 mod canvas;
+#[cfg(test)]
+mod opening_tests;
 mod panels;
 
 use kinolab_common::Feedback;
 use kinolab_mechanism::exercise::Task;
-use kinolab_mechanism::{FrameRef, JointKind, Model, Obstacle, Vector3, catalogue};
+use kinolab_mechanism::{FrameRef, JointKind, Model, Obstacle, Vector3, catalogue, file, urdf};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::scene3d::{Camera, ViewKind};
 use crate::export::{self, Export};
 use crate::link::{self, Moment};
+use crate::open;
 use crate::widget::{LabWidget, Params};
 
 /// The widget's name in the schema.
@@ -55,7 +58,8 @@ enum TaskKind {
     SpotSingular,
 }
 
-/// The frame a learner moves, by model: the first one the model has.
+/// The frame a learner moves, by model: the first one the model has, else
+/// the end of its longest chain.
 const END_FRAMES: [&str; 5] = [
     "tool",
     "arm/gripper",
@@ -212,7 +216,9 @@ impl Viewer {
         let driven: Vec<usize> = (0..model.dof()).filter(|&v| model.is_driven(v)).collect();
         let end = END_FRAMES
             .iter()
-            .find_map(|n| model.frame(n).ok().map(|f| ((*n).to_string(), f)));
+            .copied()
+            .chain([model.tip()])
+            .find_map(|n| model.frame(n).ok().map(|f| (n.to_string(), f)));
         let (centre, extent) = bounds::bounds(&model, &q, false);
         Self {
             camera: Camera::new(kind, centre, extent),
@@ -325,6 +331,29 @@ impl Viewer {
         }
     }
 
+    /// Open a model file's text (JSON or URDF) in place of the model
+    /// shown. The note says what
+    /// happened, and what the file had that the lab leaves out.
+    fn open_file(&mut self, name: &str, text: &str) {
+        let opened = if urdf::looks_like_xml(text) {
+            urdf::read(text).map(|r| (r.notices, r.model))
+        } else {
+            file::from_json(text).map(|m| (Vec::new(), m))
+        };
+        match opened {
+            Ok((notices, model)) => {
+                let title = model.name().to_owned();
+                self.replace_model(model);
+                let mut note = format!("Opened {title} from {name}.");
+                for n in notices {
+                    note.push_str(&format!(" Note: {n}."));
+                }
+                self.file_note = Some(note);
+            }
+            Err(e) => self.file_note = Some(format!("{name} was not opened: {e}")),
+        }
+    }
+
     fn replace_model(&mut self, model: Model) {
         let kind = self.camera.kind;
         let keep = (self.frames, self.shapes, self.drag, self.tree);
@@ -369,6 +398,20 @@ impl Viewer {
     }
 }
 
+/// Over the drawing while a file is dragged over the page: where it goes.
+fn drop_hint(ui: &egui::Ui, rect: egui::Rect) {
+    let painter = ui.painter_at(rect);
+    let visuals = ui.visuals();
+    painter.rect_filled(rect, 4.0, visuals.extreme_bg_color.gamma_multiply(0.85));
+    painter.text(
+        rect.center(),
+        egui::Align2::CENTER_CENTER,
+        "Drop a URDF or a model file to open it",
+        egui::FontId::proportional(18.0),
+        visuals.strong_text_color(),
+    );
+}
+
 /// The view and the driven joints' values, as the first format of links
 /// carried them.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -381,8 +424,14 @@ const VIEWS: [ViewKind; 3] = [ViewKind::Orbit, ViewKind::Plan, ViewKind::Side];
 
 impl LabWidget for Viewer {
     fn ui(&mut self, ui: &mut egui::Ui) {
+        if let Some(file) = open::take_dropped(ui.ctx()) {
+            self.open_file(&file.name, &file.text());
+        }
         self.toolbar(ui);
         let drawing = self.canvas(ui);
+        if open::files_hovering(ui.ctx()) {
+            drop_hint(ui, drawing);
+        }
         export::bar(
             ui,
             ui.scope_id().with("mechanism-exports"),

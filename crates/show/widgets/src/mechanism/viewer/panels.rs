@@ -6,11 +6,12 @@ use egui::{RichText, vec2};
 use kinolab_common::Feedback;
 use kinolab_common::display::fixed;
 use kinolab_mechanism::exercise::{Task, conditioning};
-use kinolab_mechanism::{Goal, JointKind, Options, Part, Plane, Target, Vector3, file};
+use kinolab_mechanism::{Goal, JointKind, Options, Part, Plane, Target, Vector3, file, urdf};
 
 use super::{Viewer, from_shown, to_shown};
 use crate::draw::scene3d::ViewKind;
 use crate::export::request_save;
+use crate::open;
 use crate::theme;
 use crate::widget::feedback_ui;
 
@@ -68,7 +69,7 @@ impl Viewer {
         };
         let prismatic = joint.kind == JointKind::Prismatic;
         let unit = if prismatic { " m" } else { "°" };
-        ui.label(label);
+        let name = ui.label(label);
         if self.driven.contains(&v) {
             let [lo, hi] = joint.limits.unwrap_or(if prismatic {
                 [-1.0, 1.0]
@@ -80,7 +81,7 @@ impl Viewer {
             let slider = egui::Slider::new(&mut shown, range)
                 .suffix(unit)
                 .fixed_decimals(if prismatic { 2 } else { 0 });
-            if ui.add(slider).changed() {
+            if ui.add(slider).labelled_by(name.id).changed() {
                 self.q[v] = from_shown(&self.model, v, shown);
                 changed = true;
             }
@@ -366,38 +367,72 @@ impl Viewer {
     }
 
     pub(super) fn file_ui(&mut self, ui: &mut egui::Ui) {
-        egui::CollapsingHeader::new("Model file").show(ui, |ui| {
-            ui.horizontal(|ui| {
-                if ui.button("Save model file").clicked() {
-                    let text = file::to_json(&self.model);
-                    let name = format!(
-                        "{}.model.json",
-                        self.model.name().to_lowercase().replace(' ', "-")
-                    );
-                    request_save(ui.ctx(), &name, "application/json", text.into_bytes());
-                    self.file_note = Some(format!("Saved {name}."));
+        let id = ui.scope_id().with("mechanism-file");
+        if let Some(file) = open::take_delivered(ui.ctx(), id) {
+            self.open_file(&file.name, &file.text());
+        }
+        egui::CollapsingHeader::new("Model file: JSON or URDF").show(ui, |ui| {
+            ui.horizontal_wrapped(|ui| {
+                if ui
+                    .button("Open a file…")
+                    .on_hover_text("A URDF (.urdf) or a Kinolab model file (.model.json); dropping one on the page opens it too.")
+                    .clicked()
+                {
+                    open::request_pick(ui.ctx(), id, ".urdf,.xml,.json");
                 }
-                if ui.button("Load from the text below").clicked() {
-                    match file::from_json(&self.file_text) {
-                        Ok(m) => {
-                            let name = m.name().to_string();
-                            self.replace_model(m);
-                            self.file_note = Some(format!("Loaded {name}."));
-                        }
-                        Err(e) => self.file_note = Some(format!("Not loaded: {e}")),
-                    }
+                if ui.button("Open the text below").clicked() {
+                    let text = self.file_text.clone();
+                    self.open_file("the pasted text", &text);
+                }
+                if ui.button("Save model file").clicked() {
+                    self.save(ui.ctx(), false);
+                }
+                if ui
+                    .button("Save as URDF")
+                    .on_hover_text("For ROS, MoveIt, Pinocchio and Drake.")
+                    .clicked()
+                {
+                    self.save(ui.ctx(), true);
                 }
             });
             ui.add(
                 egui::TextEdit::multiline(&mut self.file_text)
-                    .hint_text("paste a model file (JSON) here")
+                    .hint_text("paste a model file (JSON) or a URDF here")
                     .desired_rows(4)
                     .code_editor(),
             );
             if let Some(n) = &self.file_note {
-                ui.label(RichText::new(n).small());
+                ui.add(egui::Label::new(RichText::new(n).small()).wrap());
             }
         });
+    }
+
+    /// Ask the host to save the model as a Kinolab file or as URDF.
+    fn save(&mut self, ctx: &egui::Context, as_urdf: bool) {
+        let stem = self.model.name().to_lowercase().replace(' ', "-");
+        let (name, mime, text, notices) = if as_urdf {
+            let written = urdf::write(&self.model);
+            (
+                format!("{stem}.urdf"),
+                "application/xml",
+                written.text,
+                written.notices,
+            )
+        } else {
+            let text = file::to_json(&self.model);
+            (
+                format!("{stem}.model.json"),
+                "application/json",
+                text,
+                Vec::new(),
+            )
+        };
+        request_save(ctx, &name, mime, text.into_bytes());
+        let mut note = format!("Saved {name}.");
+        for n in notices {
+            note.push_str(&format!(" Note: {n}."));
+        }
+        self.file_note = Some(note);
     }
 
     pub(super) fn exercise_ui(&mut self, ui: &mut egui::Ui) {
