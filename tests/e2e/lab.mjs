@@ -219,7 +219,7 @@ try {
   await check("a port is wired by a mouse drag at a normal speed", async () => {
     const desk = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
     watch(desk, "wiring");
-    await desk.goto(`${server.url}#/${wiringLesson}`);
+    await desk.goto(`${server.url}?probe#/${wiringLesson}`);
     await waitForPage(desk, wiringLesson);
     const from = await bringIntoView(desk, "port motion.source");
     const to = (await points(desk))["service planner.route"];
@@ -286,7 +286,7 @@ try {
   });
 
   await check("a finger wires a port on the phone", async () => {
-    await small.goto(`${server.url}#/${wiringLesson}`);
+    await small.goto(`${server.url}?probe#/${wiringLesson}`);
     await waitForPage(small, wiringLesson);
     const from = await bringIntoView(small, "port motion.source");
     const to = (await points(small))["service planner.route"];

@@ -24,6 +24,14 @@ fn window() -> Option<web_sys::Window> {
     web_sys::window()
 }
 
+/// Whether the page was opened with `?probe` (a browser test that needs
+/// the widgets' named points).
+pub fn probing() -> bool {
+    window()
+        .and_then(|w| w.location().search().ok())
+        .is_some_and(|s| s.split(['?', '&']).any(|p| p == "probe"))
+}
+
 /// Whether the device has a touch screen (a phone, a tablet).
 pub fn touch_screen() -> bool {
     window().is_some_and(|w| w.navigator().max_touch_points() > 0)

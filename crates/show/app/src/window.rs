@@ -91,6 +91,10 @@ pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
         cc.storage.and_then(|s| s.get_string(progress::STORAGE_KEY)),
         false,
     );
+    #[cfg(target_arch = "wasm32")]
+    if crate::web::probing() {
+        kinolab_widgets::probe::enable(&cc.egui_ctx);
+    }
     let mut app = KinolabApp::new(stored.as_deref(), hash);
     if touch {
         // A finger drag over text scrolls from the very first touch.

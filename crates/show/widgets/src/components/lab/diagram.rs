@@ -101,6 +101,9 @@ pub struct Anchors {
 impl Anchors {
     /// Every port and service as a point a browser test can aim at.
     fn publish(&self, ctx: &egui::Context) {
+        if !crate::probe::enabled(ctx) {
+            return;
+        }
         for (name, at) in &self.ports {
             crate::probe::publish(ctx, &format!("port {name}"), *at);
         }
