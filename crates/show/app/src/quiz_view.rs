@@ -130,7 +130,7 @@ fn answer_controls(
         }
         QuizKind::Multiple { options, .. } => {
             state.ticks.resize(options.len(), false);
-            ui.label(RichText::new("Tick every right answer.").small().weak());
+            ui.label(RichText::new("Tick every right answer.").italics());
             for (i, option) in options.iter().enumerate() {
                 let ticked = state.ticks[i];
                 let clicked = option_control(ui, option, ticked, true, navigate);
@@ -159,7 +159,7 @@ fn answer_controls(
         }
         QuizKind::Sort { bins, items } => {
             state.sorted.resize(items.len(), None);
-            ui.label(RichText::new("Put each item in its bin.").small().weak());
+            ui.label(RichText::new("Put each item in its bin.").italics());
             // On a phone the item's text goes on its own line, under its bins.
             let narrow = kinolab_widgets::widget::narrow(ui);
             for (i, item) in items.iter().enumerate() {
@@ -167,12 +167,8 @@ fn answer_controls(
                 ui.horizontal_wrapped(|ui| {
                     for (b, bin) in bins.iter().enumerate() {
                         let on = state.sorted[i] == Some(b);
-                        // A framed button even at rest: a bin is a choice
-                        // to press, not a word in the text.
-                        let button =
-                            egui::Button::selectable(on, RichText::new(bin).size(theme::BODY_SIZE))
-                                .frame_when_inactive(true);
-                        if ui.add(button).clicked() {
+                        let text = RichText::new(bin).size(theme::BODY_SIZE);
+                        if kinolab_widgets::widget::choice(ui, on, text).clicked() {
                             state.sorted[i] = Some(b);
                             state.verdict = None;
                         }

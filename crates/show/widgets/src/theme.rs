@@ -141,11 +141,15 @@ pub fn pattern_color(pattern: &str) -> Color32 {
     }
 }
 
+const PALETTE: [Color32; 6] = [ORANGE, BLUE, GREEN, MAGENTA, GOLD, PURPLE];
+
+/// How many distinct colours [`palette`] cycles through.
+pub const PALETTE_LEN: usize = PALETTE.len();
+
 /// The `i`-th of a cycle of distinct colours, readable on both themes: one
 /// per wheel, per plotted series, per leg, per behaviour.
 pub fn palette(i: usize) -> Color32 {
-    const PALETTE: [Color32; 6] = [ORANGE, BLUE, GREEN, MAGENTA, GOLD, PURPLE];
-    PALETTE[i % PALETTE.len()]
+    PALETTE[i % PALETTE_LEN]
 }
 
 /// Fonts and text styles for the lab; call once, before the first frame

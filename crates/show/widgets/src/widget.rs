@@ -215,6 +215,31 @@ pub fn feedback_text(f: &Feedback) -> String {
 pub const NARROW: f32 = 560.0;
 
 /// Whether `ui` is too narrow for a widget's panels side by side.
+/// One option of a choice, framed even when not chosen so that every
+/// option reads as a button; the chosen one is highlighted.
+pub fn choice(
+    ui: &mut egui::Ui,
+    selected: bool,
+    text: impl Into<egui::WidgetText>,
+) -> egui::Response {
+    ui.add(egui::Button::selectable(selected, text).frame_when_inactive(true))
+}
+
+/// [`choice`] bound to `current`: a click sets it to `value`.
+pub fn choose<T: PartialEq>(
+    ui: &mut egui::Ui,
+    current: &mut T,
+    value: T,
+    text: impl Into<egui::WidgetText>,
+) -> egui::Response {
+    let mut response = choice(ui, *current == value, text);
+    if response.clicked() && *current != value {
+        *current = value;
+        response.mark_changed();
+    }
+    response
+}
+
 pub fn narrow(ui: &egui::Ui) -> bool {
     ui.available_width() < NARROW
 }

@@ -197,8 +197,8 @@ impl GridPlanner {
         let mut radius = self.radius();
         let s = &mut self.settings;
         ui.horizontal_wrapped(|ui| {
-            ui.selectable_value(&mut s.algorithm, Algo::Dijkstra, "Dijkstra");
-            ui.selectable_value(&mut s.algorithm, Algo::Astar, "A* (octile)");
+            crate::widget::choose(ui, &mut s.algorithm, Algo::Dijkstra, "Dijkstra");
+            crate::widget::choose(ui, &mut s.algorithm, Algo::Astar, "A* (octile)");
             if ui
                 .button("Play the search")
                 .on_hover_text("From the first cell, as it expands")
@@ -242,6 +242,7 @@ fn draw_search(
     grid: &Grid,
     search: &Search,
     shown: usize,
+    ends: [[f64; 2]; 2],
 ) {
     let half = grid.cell / 2.0;
     let cell_rect = |c: Cell| {
@@ -270,19 +271,39 @@ fn draw_search(
         );
     }
     if shown >= search.expanded.len() && search.path.len() > 1 {
-        let points: Vec<Pos2> = search
-            .path
-            .iter()
-            .map(|&c| {
-                let p = grid.centre(c);
-                view.to_screen([p.x, p.y])
-            })
-            .collect();
-        painter.add(egui::Shape::line(
-            points,
-            Stroke::new(3.0, theme::good_color(ui)),
-        ));
+        draw_path(ui, painter, view, grid, &search.path, ends);
     }
+}
+
+/// The path from cell centre to cell centre (the length the search
+/// measures), and a dashed step from the start dot to the first centre and
+/// from the last centre to the goal dot: with big cells the dots sit off
+/// the centres.
+fn draw_path(
+    ui: &egui::Ui,
+    painter: &Painter,
+    view: &PlaneView,
+    grid: &Grid,
+    path: &[Cell],
+    [start, goal]: [[f64; 2]; 2],
+) {
+    let colour = theme::good_color(ui);
+    let points: Vec<Pos2> = path
+        .iter()
+        .map(|&c| {
+            let p = grid.centre(c);
+            view.to_screen([p.x, p.y])
+        })
+        .collect();
+    let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
+        return;
+    };
+    let step = Stroke::new(2.0, colour);
+    for (dot, centre) in [(start, first), (goal, last)] {
+        let dashes = egui::Shape::dashed_line(&[view.to_screen(dot), centre], step, 5.0, 4.0);
+        painter.extend(dashes);
+    }
+    painter.add(egui::Shape::line(points, Stroke::new(3.0, colour)));
 }
 
 fn marker(painter: &Painter, labels: &mut Labels, at: Pos2, color: Color32, text: &str) {
@@ -298,8 +319,8 @@ fn marker(painter: &Painter, labels: &mut Labels, at: Pos2, color: Color32, text
 fn summary(d: &Search, a: &Search, astar: bool) -> String {
     let cost = d
         .cost
-        .map_or("no path: the goal cannot be reached".to_owned(), |c| {
-            format!("shortest path {} m", fixed(c, 2))
+        .map_or("No path: the goal cannot be reached".to_owned(), |c| {
+            format!("Shortest path {} m", fixed(c, 2))
         });
     let (mine, other) = if astar { (a, d) } else { (d, a) };
     format!(
@@ -326,9 +347,11 @@ impl GridPlanner {
         );
         // The world first (it paints the floor), the grid and search over it.
         draw_world(ui, &painter, &view, &self.world, 0.0);
+        let ends = [self.start(), self.goal()];
         if let (Some(s), Some(player)) = (&self.searches, &mut self.player) {
             let shown = player.state().k;
-            draw_search(ui, &painter, &view, &s.grid, &player.state().search, shown);
+            let search = &player.state().search;
+            draw_search(ui, &painter, &view, &s.grid, search, shown, ends);
         }
         self.handles(ui, &painter, &view);
         response.rect
@@ -603,7 +626,7 @@ mod tests {
         let d = grid.search(s, g, Algorithm::Dijkstra);
         let a = grid.search(s, g, Algorithm::AStar);
         let text = summary(&d, &a, true);
-        assert!(text.starts_with("shortest path "), "{text}");
+        assert!(text.starts_with("Shortest path "), "{text}");
         assert!(a.expanded.len() < d.expanded.len());
         assert!(
             text.contains(&format!("A* expanded {} cells", a.expanded.len())),

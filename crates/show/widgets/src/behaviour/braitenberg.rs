@@ -15,7 +15,7 @@ use kinolab_common::trajectory::Sample as Motion;
 use kinolab_world::{Light, Pose, Sensors, World};
 use serde::{Deserialize, Serialize};
 
-use super::world_view::{color, draw_robot, draw_trail, draw_world};
+use super::world_view::{draw_robot, draw_trail, draw_world};
 use crate::draw::{PlaneView, canvas, handle};
 use crate::export::{self, Export};
 use crate::link::{self, Moment};
@@ -370,13 +370,18 @@ impl Vehicles {
                     .filter_map(|t| t.get(i))
                     .map(|m| [m.pose.x, m.pose.y]),
             );
-            draw_trail(&painter, &view, trail, color(i).gamma_multiply(0.7));
+            draw_trail(
+                &painter,
+                &view,
+                trail,
+                crate::theme::palette(i).gamma_multiply(0.7),
+            );
             draw_robot(
                 &painter,
                 &view,
                 &r.sim.pose,
                 r.sim.body.radius(),
-                color(i),
+                crate::theme::palette(i),
                 ink,
             );
         }
@@ -470,7 +475,7 @@ fn wiring_editor(ui: &mut egui::Ui, i: usize, w: &mut Wiring) -> Option<Edit> {
             w.character().vehicle(),
             w.character().name()
         ))
-        .color(color(i))
+        .color(crate::theme::palette(i))
         .strong(),
     );
     let before = *w;
@@ -529,7 +534,7 @@ impl Vehicles {
             ui.horizontal_wrapped(|ui| {
                 ui.label("Save the run of");
                 for i in 0..count {
-                    ui.selectable_value(&mut self.saving, i, format!("vehicle {}", i + 1));
+                    crate::widget::choose(ui, &mut self.saving, i, format!("vehicle {}", i + 1));
                 }
             });
         }

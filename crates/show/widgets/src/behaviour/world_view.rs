@@ -1,15 +1,34 @@
 //! Drawing a world and the robots in it, shared by the behaviour widgets.
 
 use egui::{Color32, Painter, Pos2, Shape, Stroke, vec2};
+use kinolab_behaviours::{Behaviour, Named};
 use kinolab_world::{Pose, Shape as Obstacle, World};
 
 use crate::draw::PlaneView;
 use crate::draw::marks::star;
 use crate::theme;
 
-/// The colour of behaviour `i` (the lab's palette).
-pub fn color(i: usize) -> Color32 {
-    theme::palette(i)
+/// Each behaviour's colour, the same for a kind of behaviour in every
+/// lesson (avoiding is always the first of the palette, heading for the
+/// goal the second, …); a second behaviour of a kind already coloured
+/// takes the next colour no other behaviour of the robot has.
+pub fn colors(behaviours: &[Named]) -> Vec<Color32> {
+    let mut used = Vec::new();
+    for b in behaviours {
+        let preferred = match b.behaviour {
+            Behaviour::Avoid { .. } => 0,
+            Behaviour::GoToGoal { .. } | Behaviour::Dock { .. } => 1,
+            Behaviour::Wander { .. } => 2,
+            Behaviour::FollowWall { .. } | Behaviour::Corridor { .. } => 3,
+            Behaviour::SeekLight { .. } | Behaviour::Braitenberg(_) => 4,
+            _ => 5,
+        };
+        let free = (0..theme::PALETTE_LEN)
+            .map(|k| (preferred + k) % theme::PALETTE_LEN)
+            .find(|k| !used.contains(k));
+        used.push(free.unwrap_or(used.len() % theme::PALETTE_LEN));
+    }
+    used.into_iter().map(theme::palette).collect()
 }
 
 /// The fence, the obstacles where they are at time `t`, lights and goal.
@@ -134,5 +153,46 @@ pub fn draw_trail(
     let pts: Vec<Pos2> = points.map(|p| view.to_screen(p)).collect();
     if pts.len() > 1 {
         painter.add(Shape::line(pts, Stroke::new(1.5, color)));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn named(name: &str, kind: serde_json::Value) -> Named {
+        let mut v = kind;
+        v["name"] = name.into();
+        serde_json::from_value(v).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn a_kind_of_behaviour_keeps_its_colour_wherever_it_is_listed() {
+        let avoid = || {
+            named(
+                "avoid",
+                serde_json::json!({ "kind": "avoid", "range": 0.5, "gain": 1.0 }),
+            )
+        };
+        let goal = || {
+            named(
+                "goal",
+                serde_json::json!({ "kind": "go_to_goal", "gain": 1.0 }),
+            )
+        };
+        let first = colors(&[avoid(), goal()]);
+        let second = colors(&[goal(), avoid()]);
+        assert_eq!(first[0], second[1], "avoid");
+        assert_eq!(first[1], second[0], "go to goal");
+        // Two wall followers in one robot: two colours.
+        let wall = |side: &str| {
+            named(
+                side,
+                serde_json::json!({ "kind": "follow_wall", "side": side, "distance": 0.4, "gain": 1.0 }),
+            )
+        };
+        let both = colors(&[wall("left"), wall("right"), avoid()]);
+        assert_ne!(both[0], both[1]);
+        assert_eq!(both[2], first[0]);
     }
 }

@@ -90,7 +90,7 @@ impl WhichPattern {
                 .selected_text(shown)
                 .show_ui(ui, |ui| {
                     for c in CHOICES {
-                        ui.selectable_value(pick, Some(c.to_owned()), c);
+                        crate::widget::choose(ui, pick, Some(c.to_owned()), c);
                     }
                 });
             if *pick != before {

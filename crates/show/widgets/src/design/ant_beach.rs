@@ -233,9 +233,13 @@ impl AntBeach {
             .collect();
         Plot::new(ui.scope_id().with("tortuosity"))
             .height(150.0)
-            .x_axis_label("body size (log10 of ant lengths)")
+            .x_axis_label("body size (ant lengths, log scale)")
             .y_axis_label("tortuosity")
             .include_y(1.0)
+            // The axis runs in log10 of the size; its marks say the size.
+            .x_axis_formatter(|mark, _| size_label(mark.value))
+            .y_grid_spacer(egui_plot::log_grid_spacer(2))
+            .y_axis_formatter(crate::draw::plot::axis_number)
             .allow_scroll(false)
             .show(ui, |plot| {
                 plot.line(Line::new("this beach", curve).width(2.0));
@@ -385,8 +389,28 @@ impl LabWidget for AntBeach {
     }
 }
 
+/// A mark on the log-scale axis as the size it stands for: `0.1`, `1`,
+/// `10`; marks between powers of ten keep two significant digits.
+fn size_label(log10: f64) -> String {
+    let size = 10f64.powf(log10);
+    if size >= 10.0 {
+        format!("{size:.0}")
+    } else {
+        let digits = (1.0 - size.log10().floor()).max(0.0) as usize;
+        let text = format!("{size:.digits$}");
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    }
+}
+
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn log_axis_marks_say_the_size() {
+        let labels: Vec<String> = [-1.0, 0.0, 0.5, 1.0, 2.0].map(super::size_label).to_vec();
+        assert_eq!(labels, ["0.1", "1", "3.2", "10", "100"]);
+    }
+
     use super::*;
     use crate::registry::spec;
 

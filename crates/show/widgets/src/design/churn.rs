@@ -182,8 +182,7 @@ impl LabWidget for Churn {
         ui.horizontal_wrapped(|ui| {
             ui.label("Replace:");
             for (io, what) in SWAPS {
-                if ui
-                    .selectable_label(self.settings.swap() == Some(io), io)
+                if crate::widget::choice(ui, self.settings.swap() == Some(io), io)
                     .on_hover_text(what)
                     .clicked()
                 {

@@ -263,7 +263,7 @@ impl Morphology {
                     .selected_text(names.get(*pick).cloned().unwrap_or_default())
                     .show_ui(ui, |ui| {
                         for (i, n) in names.iter().enumerate() {
-                            ui.selectable_value(pick, i, n);
+                            crate::widget::choose(ui, pick, i, n);
                         }
                     });
             }
@@ -320,7 +320,12 @@ impl LabWidget for Morphology {
                     .map(|p| &p.kind)
                 {
                     for m in *options {
-                        ui.selectable_value(&mut self.settings.mechanism, (*m).to_owned(), *m);
+                        crate::widget::choose(
+                            ui,
+                            &mut self.settings.mechanism,
+                            (*m).to_owned(),
+                            *m,
+                        );
                     }
                 }
             });

@@ -146,7 +146,7 @@ impl ThreeSlots {
             ui.horizontal_wrapped(|ui| {
                 ui.label(RichText::new(format!("{label}:")).strong());
                 for o in options {
-                    ui.selectable_value(slot, (*o).to_owned(), *o);
+                    crate::widget::choose(ui, slot, (*o).to_owned(), *o);
                 }
             });
         }
@@ -342,8 +342,7 @@ impl ThreeSlots {
             Some((i, o)) => {
                 let picked = self.why == Some(i);
                 let text = RichText::new("fails").color(theme::error_color(ui));
-                if ui
-                    .selectable_label(picked, text)
+                if crate::widget::choice(ui, picked, text)
                     .on_hover_text(&o.why)
                     .clicked()
                 {

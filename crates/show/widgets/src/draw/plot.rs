@@ -11,6 +11,18 @@ pub fn series_color(k: usize) -> Color32 {
     crate::theme::palette(k)
 }
 
+/// An axis mark as a plain number, at most three decimals, no trailing
+/// zeros (`0.25`, `-0.5`, `1`): for axes whose grid steps are not powers
+/// of ten.
+pub fn axis_number(mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f64>) -> String {
+    let text = format!("{:.3}", mark.value);
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    match text {
+        "-0" => "0".to_owned(),
+        other => other.to_owned(),
+    }
+}
+
 /// The colour of reference marks (a "now" line, a fixed level).
 pub const REFERENCE: Color32 = crate::theme::NEUTRAL;
 

@@ -366,13 +366,13 @@ impl CpgLab {
                 ui.label("pull towards:");
                 for g in options(NAME, "gait") {
                     let label = g.trim_start_matches("quadruped-");
-                    ui.selectable_value(&mut tune.gait, (*g).to_owned(), label);
+                    crate::widget::choose(ui, &mut tune.gait, (*g).to_owned(), label);
                 }
             });
         });
         ui.horizontal_wrapped(|ui| {
-            ui.selectable_value(&mut model, Model::Phase, "phase oscillators");
-            ui.selectable_value(&mut model, Model::VanDerPol, "Van der Pol");
+            crate::widget::choose(ui, &mut model, Model::Phase, "phase oscillators");
+            crate::widget::choose(ui, &mut model, Model::VanDerPol, "Van der Pol");
             if ui
                 .button("Kick")
                 .on_hover_text("Scatter the phases, and play")
@@ -479,6 +479,10 @@ impl CpgLab {
             .y_axis_label("lag error (cycles)")
             .include_y(-0.5)
             .include_y(0.5)
+            // Halves and quarters of a cycle: the base-10 grid would label
+            // only 0 in a plot this short.
+            .y_grid_spacer(egui_plot::log_grid_spacer(2))
+            .y_axis_formatter(crate::draw::plot::axis_number)
             .allow_scroll(false)
             .show(ui, |plot| {
                 let lines = series

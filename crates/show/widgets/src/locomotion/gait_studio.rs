@@ -235,7 +235,7 @@ impl GaitStudio {
                 .selected_text(&s.gait)
                 .show_ui(ui, |ui| {
                     for id in options(NAME, "gait") {
-                        ui.selectable_value(&mut s.gait, (*id).to_owned(), *id);
+                        crate::widget::choose(ui, &mut s.gait, (*id).to_owned(), *id);
                     }
                 });
             if s.gait != chosen {

@@ -182,7 +182,7 @@ impl HexapodWalker {
         ui.horizontal_wrapped(|ui| {
             for g in options(NAME, "gait") {
                 let label = g.trim_start_matches("hexapod-");
-                ui.selectable_value(&mut s.gait, (*g).to_owned(), label);
+                crate::widget::choose(ui, &mut s.gait, (*g).to_owned(), label);
             }
         });
         ui.add(

@@ -55,14 +55,8 @@ impl<S: Simulation> Player<S> {
                 self.step_forward();
             }
             for speed in Speed::ALL {
-                let chosen = self.speed == speed;
-                if ui
-                    .add(egui::Button::selectable(chosen, speed.label()))
-                    .on_hover_text("Playing speed against the clock")
-                    .clicked()
-                {
-                    self.speed = speed;
-                }
+                crate::widget::choose(ui, &mut self.speed, speed, speed.label())
+                    .on_hover_text("Playing speed against the clock");
             }
             ui.label(self.time_label());
         });

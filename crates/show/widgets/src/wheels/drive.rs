@@ -231,8 +231,8 @@ impl Drive {
         ui.horizontal_wrapped(|ui| {
             let before = self.settings.mode;
             let mode = &mut self.settings.mode;
-            ui.selectable_value(mode, Mode::Twist, "Set the twist (inverse)");
-            ui.selectable_value(mode, Mode::Wheels, "Set wheel spins (forward)");
+            crate::widget::choose(ui, mode, Mode::Twist, "Set the twist (inverse)");
+            crate::widget::choose(ui, mode, Mode::Wheels, "Set wheel spins (forward)");
             if before != self.settings.mode {
                 match self.settings.mode {
                     Mode::Wheels => self.spins_from_twist(),

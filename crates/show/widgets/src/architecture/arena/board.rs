@@ -94,7 +94,7 @@ impl ArchitectureArena {
                     ui.horizontal_wrapped(|ui| {
                         ui.label(format!("{}:", m.name));
                         for kind in Architecture::ALL {
-                            if ui.selectable_label(*pick == kind, kind.name()).clicked() {
+                            if crate::widget::choice(ui, *pick == kind, kind.name()).clicked() {
                                 *pick = kind;
                                 self.feedback = None;
                             }

@@ -25,14 +25,14 @@ impl ArchitectureArena {
                 .selected_text(s.world.id())
                 .show_ui(ui, |ui| {
                     for w in WorldId::ALL {
-                        ui.selectable_value(&mut s.world, w, w.id());
+                        crate::widget::choose(ui, &mut s.world, w, w.id());
                     }
                 });
             egui::ComboBox::new(ui.scope_id().with("surprise"), "surprise")
                 .selected_text(s.surprise.id())
                 .show_ui(ui, |ui| {
                     for k in Scripted::ALL {
-                        ui.selectable_value(&mut s.surprise, k, k.id());
+                        crate::widget::choose(ui, &mut s.surprise, k, k.id());
                     }
                 });
         });
@@ -46,7 +46,7 @@ impl ArchitectureArena {
             for (i, name) in NAMES.iter().enumerate() {
                 let text = RichText::new(*name).color(theme::ARCHITECTURE_COLORS[i]);
                 let kind = Architecture::ALL[i];
-                if ui.selectable_label(s.focus == kind, text).clicked() {
+                if crate::widget::choice(ui, s.focus == kind, text).clicked() {
                     s.focus = kind;
                 }
             }

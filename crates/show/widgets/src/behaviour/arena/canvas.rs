@@ -5,7 +5,7 @@ use egui::{Sense, Stroke, vec2};
 use kinolab_world::Vec2;
 
 use super::{Arena, Shown};
-use crate::behaviour::world_view::{color, draw_robot, draw_trail, draw_world};
+use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
 use crate::draw::marks::arrow;
 use crate::draw::{PlaneView, handle};
 
@@ -13,9 +13,18 @@ use crate::draw::{PlaneView, handle};
 const ARROW_SCALE: f32 = 110.0;
 
 impl Arena {
-    /// The world and the robot at the instant shown; returns where it is
-    /// on screen.
+    /// The world and the robot at the instant shown, with its legend
+    /// underneath; returns where the drawing is on screen.
     pub(super) fn canvas(&mut self, ui: &mut egui::Ui, width: f32) -> egui::Rect {
+        ui.vertical(|ui| {
+            let rect = self.scene(ui, width);
+            self.legend(ui);
+            rect
+        })
+        .inner
+    }
+
+    fn scene(&mut self, ui: &mut egui::Ui, width: f32) -> egui::Rect {
         let Some(setup) = self.setup.clone() else {
             return egui::Rect::NOTHING;
         };
@@ -25,6 +34,7 @@ impl Arena {
         let view = PlaneView::fit(rect.shrink(4.0), [b.x_min, b.y_min], [b.x_max, b.y_max]);
         let painter = ui.painter_at(rect);
         let ink = ui.visuals().text_color();
+        let colors = self.colors();
         let Some(player) = &mut self.player else {
             return rect;
         };
@@ -50,13 +60,12 @@ impl Arena {
                 painter.line_segment([at, view.to_screen(end)], Stroke::new(1.0, c));
             }
         }
-        let body = in_control_color(run.last.as_ref().and_then(|r| r.in_control));
+        let body = in_control_color(&colors, run.last.as_ref().and_then(|r| r.in_control));
         draw_robot(&painter, &view, &pose, radius, body, ink);
         if let Some(r) = &run.last {
-            arrows(&painter, &view, &pose, r, ink);
+            arrows(&painter, &view, &pose, r, &colors, ink);
         }
         self.drag(ui, &view);
-        self.legend(ui, rect);
         rect
     }
 
@@ -112,44 +121,15 @@ impl Arena {
         }
     }
 
-    fn legend(&self, ui: &egui::Ui, rect: egui::Rect) {
-        let painter = ui.painter_at(rect);
-        let font = egui::FontId::proportional(crate::theme::TITLE_SIZE);
+    /// Under the drawing, never on it: each behaviour's colour, and the
+    /// command's.
+    fn legend(&self, ui: &mut egui::Ui) {
         let names = self.names();
-        let backdrop = egui::Rect::from_min_size(
-            rect.left_top() + vec2(4.0, 4.0),
-            vec2(110.0, 17.0 * (names.len() + 1) as f32 + 8.0),
-        );
-        painter.rect_filled(
-            backdrop,
-            4.0,
-            ui.visuals().extreme_bg_color.gamma_multiply(0.85),
-        );
-        let mut y = rect.top() + 16.0;
-        for (i, name) in names.iter().enumerate() {
-            let at = egui::pos2(rect.left() + 10.0, y);
-            painter.line_segment([at, at + vec2(18.0, 0.0)], Stroke::new(3.0, color(i)));
-            painter.text(
-                at + vec2(24.0, 0.0),
-                egui::Align2::LEFT_CENTER,
-                name,
-                font.clone(),
-                ui.visuals().text_color(),
-            );
-            y += 17.0;
-        }
-        let at = egui::pos2(rect.left() + 10.0, y);
-        painter.line_segment(
-            [at, at + vec2(18.0, 0.0)],
-            Stroke::new(4.0, ui.visuals().text_color()),
-        );
-        painter.text(
-            at + vec2(24.0, 0.0),
-            egui::Align2::LEFT_CENTER,
-            "command",
-            font,
-            ui.visuals().text_color(),
-        );
+        let colors = self.colors();
+        let mut entries: Vec<(&str, egui::Color32)> =
+            names.iter().map(String::as_str).zip(colors).collect();
+        entries.push(("command", ui.visuals().text_color()));
+        crate::draw::plot::legend(ui, &entries);
     }
 }
 
@@ -159,6 +139,7 @@ fn arrows(
     view: &PlaneView,
     pose: &kinolab_world::Pose,
     r: &Shown,
+    colors: &[egui::Color32],
     ink: egui::Color32,
 ) {
     let at = view.to_screen([pose.x, pose.y]);
@@ -166,14 +147,14 @@ fn arrows(
         let (s, c) = pose.theta.sin_cos();
         vec2((c * v.x - s * v.y) as f32, -(s * v.x + c * v.y) as f32)
     };
-    for (i, v) in r.vectors.iter().enumerate() {
+    for (v, &color) in r.vectors.iter().zip(colors) {
         if let Some(v) = v {
             arrow(
                 painter,
                 at,
                 world_dir(*v) * ARROW_SCALE,
                 8.0,
-                Stroke::new(2.0, color(i)),
+                Stroke::new(2.0, color),
             );
         }
     }
@@ -188,6 +169,11 @@ fn arrows(
 }
 
 /// The robot takes the colour of the behaviour in control.
-pub(super) fn in_control_color(in_control: Option<usize>) -> egui::Color32 {
-    in_control.map_or(crate::theme::NEUTRAL, color)
+pub(super) fn in_control_color(
+    colors: &[egui::Color32],
+    in_control: Option<usize>,
+) -> egui::Color32 {
+    in_control
+        .and_then(|i| colors.get(i).copied())
+        .unwrap_or(crate::theme::NEUTRAL)
 }

@@ -9,7 +9,6 @@ use kinolab_behaviours::coordinate::{Coordinator, Trace};
 use kinolab_common::display::fixed;
 
 use super::{Arena, Shown, sets};
-use crate::behaviour::world_view::color;
 use crate::theme;
 
 impl Arena {
@@ -19,9 +18,7 @@ impl Arena {
             ui.label(RichText::new("Coordination").strong());
             ui.horizontal_wrapped(|ui| {
                 for c in sets::COORDINATORS {
-                    if ui
-                        .selectable_label(self.settings.coordinator == c, c.name())
-                        .clicked()
+                    if crate::widget::choice(ui, self.settings.coordinator == c, c.name()).clicked()
                         && self.settings.coordinator != c
                     {
                         let mut settings = self.settings.clone();
@@ -42,17 +39,15 @@ impl Arena {
                 ui.label(
                     "Vector summation: every active behaviour's arrow, times its gain, added.",
                 );
-                for (i, name) in names.iter().enumerate() {
+                for (i, (name, color)) in names.iter().zip(self.colors()).enumerate() {
                     let gain = gains.get(name).copied().unwrap_or(1.0);
                     let size = record
                         .and_then(|r| r.vectors[i])
                         .map_or("off".to_owned(), |v| format!("{} m/s", fixed(v.norm(), 2)));
-                    ui.label(
-                        RichText::new(format!("■ {name}: gain {gain}, {size}")).color(color(i)),
-                    );
+                    ui.label(RichText::new(format!("■ {name}: gain {gain}, {size}")).color(color));
                 }
             }
-            Coordinator::Subsumption(s) => subsumption(ui, s, &names, record),
+            Coordinator::Subsumption(s) => subsumption(ui, s, &names, &self.colors(), record),
             Coordinator::Voting(_) => votes(ui, record),
             Coordinator::Sequencer(s) => states(ui, s, record),
             Coordinator::Script { .. } => {
@@ -71,7 +66,13 @@ impl Arena {
 /// Layers stacked (the highest on top), each with its wire running right;
 /// level 0's wire reaches the motors. Nodes sit on the wires they act on
 /// and light up while they act.
-fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Option<&Shown>) {
+fn subsumption(
+    ui: &mut egui::Ui,
+    s: &Subsumption,
+    names: &[String],
+    colors: &[Color32],
+    record: Option<&Shown>,
+) {
     let acting = match record.map(|r| &r.trace) {
         Some(Trace::Subsumption { acting }) => acting.clone(),
         _ => vec![false; s.nodes.len()],
@@ -87,6 +88,7 @@ fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Opt
     let motor_x = rect.right() - 40.0;
     for (level, name) in s.layers.iter().enumerate() {
         let i = names.iter().position(|n| n == name).unwrap_or(0);
+        let color = colors.get(i).copied().unwrap_or(theme::NEUTRAL);
         let b = egui::Rect::from_min_max(
             pos2(rect.left() + 4.0, y(level) - 12.0),
             pos2(box_right, y(level) + 12.0),
@@ -95,8 +97,8 @@ fn subsumption(ui: &mut egui::Ui, s: &Subsumption, names: &[String], record: Opt
         painter.rect(
             b,
             4.0,
-            color(i).gamma_multiply(if lit { 0.5 } else { 0.15 }),
-            Stroke::new(1.0, color(i)),
+            color.gamma_multiply(if lit { 0.5 } else { 0.15 }),
+            Stroke::new(1.0, color),
             egui::StrokeKind::Middle,
         );
         painter.text(

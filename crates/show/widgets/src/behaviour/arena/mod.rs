@@ -19,6 +19,7 @@ use kinolab_world::sensors::RayReading;
 use kinolab_world::{Command, Pose, Vec2, World};
 use serde::{Deserialize, Serialize};
 
+use crate::behaviour::world_view::colors;
 use crate::link::{self, Moment};
 use crate::player::{Player, Simulation};
 use crate::widget::{LabWidget, Params, SavedRun};
@@ -309,6 +310,14 @@ impl Arena {
     /// The run at the instant shown.
     fn shown(&mut self) -> Option<&Run> {
         Some(self.player.as_mut()?.state())
+    }
+
+    /// Each behaviour's colour (see [`colors`]).
+    fn colors(&self) -> Vec<egui::Color32> {
+        self.setup
+            .as_ref()
+            .map(|s| colors(&s.behaviours))
+            .unwrap_or_default()
     }
 
     fn names(&self) -> Vec<String> {

@@ -156,7 +156,7 @@ impl Arena {
             }
             ui.horizontal(|ui| {
                 for w in 0..3 {
-                    ui.selectable_value(&mut design.world, w, format!("world {}", w + 1));
+                    crate::widget::choose(ui, &mut design.world, w, format!("world {}", w + 1));
                 }
             });
             if ui.button("Check on all three worlds").clicked() {

@@ -46,6 +46,7 @@ impl Arena {
         let dt = self.setup.as_ref().map_or(0.05, |s| s.dt);
         let steps = (DURATION / dt).round().max(1.0) as usize;
         let red = crate::theme::error_color(ui);
+        let colors = self.colors();
         let Some(player) = &mut self.player else {
             return;
         };
@@ -64,7 +65,7 @@ impl Arena {
                     painter.rect_filled(
                         cell,
                         0.0,
-                        in_control_color(r.in_control).gamma_multiply(faint),
+                        in_control_color(&colors, r.in_control).gamma_multiply(faint),
                     );
                     if r.bump() {
                         painter.line_segment(

@@ -236,7 +236,7 @@ impl ComponentLab {
                     .selected_text(&self.settings.system)
                     .show_ui(ui, |ui| {
                         for (id, _) in EXAMPLES {
-                            ui.selectable_value(&mut self.settings.system, id.to_owned(), id);
+                            crate::widget::choose(ui, &mut self.settings.system, id.to_owned(), id);
                         }
                     });
             }

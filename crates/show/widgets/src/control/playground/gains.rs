@@ -55,7 +55,7 @@ impl Playground {
                 .selected_text(direction_name(self.set.direction))
                 .show_ui(ui, |ui| {
                     for d in [Direction::Auto, Direction::Forward, Direction::Backward] {
-                        ui.selectable_value(&mut self.set.direction, d, direction_name(d));
+                        crate::widget::choose(ui, &mut self.set.direction, d, direction_name(d));
                     }
                 });
         });

@@ -186,7 +186,7 @@ impl Playground {
     fn tab_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             for (view, label) in TABS {
-                if ui.selectable_label(self.set.view == view, label).clicked() {
+                if crate::widget::choice(ui, self.set.view == view, label).clicked() {
                     self.show(view);
                 }
             }

@@ -51,8 +51,7 @@ impl Sandbox {
             .width(230.0_f32.min(ui.available_width() - 60.0))
             .show_ui(ui, |ui| {
                 for p in &PRESETS {
-                    if ui
-                        .selectable_label(current.is_some_and(|c| c.id == p.id), p.title)
+                    if crate::widget::choice(ui, current.is_some_and(|c| c.id == p.id), p.title)
                         .clicked()
                     {
                         chosen = Some(p);
@@ -83,10 +82,7 @@ impl Sandbox {
             .show(ui, |ui| {
                 for i in 0..self.design.pieces.len() {
                     let title = format!("{}. {}", i + 1, self.design.pieces[i].title());
-                    if ui
-                        .selectable_label(self.selected == Some(i), title)
-                        .clicked()
-                    {
+                    if crate::widget::choice(ui, self.selected == Some(i), title).clicked() {
                         self.selected = Some(i);
                     }
                 }

@@ -250,7 +250,7 @@ impl Piece {
                 .selected_text(self.kind.name())
                 .show_ui(ui, |ui| {
                     for k in Kind::ALL {
-                        ui.selectable_value(&mut self.kind, k, k.name());
+                        crate::widget::choose(ui, &mut self.kind, k, k.name());
                     }
                 });
             if !self.kind.profiles().contains(&self.profile) {
@@ -260,7 +260,7 @@ impl Piece {
                 .selected_text(self.profile.name())
                 .show_ui(ui, |ui| {
                     for p in self.kind.profiles() {
-                        ui.selectable_value(&mut self.profile, *p, p.name());
+                        crate::widget::choose(ui, &mut self.profile, *p, p.name());
                     }
                 });
         }

@@ -371,10 +371,7 @@ impl Viewer {
         ui.horizontal_wrapped(|ui| {
             ui.label("view:");
             for kind in [ViewKind::Orbit, ViewKind::Plan, ViewKind::Side] {
-                if ui
-                    .selectable_label(self.camera.kind == kind, kind.label())
-                    .clicked()
-                {
+                if crate::widget::choice(ui, self.camera.kind == kind, kind.label()).clicked() {
                     self.camera = Camera::new(kind, self.camera.centre, self.camera.extent);
                 }
             }

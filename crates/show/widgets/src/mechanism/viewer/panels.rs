@@ -289,8 +289,7 @@ impl Viewer {
                         )
                         .to_lowercase()
                     });
-                    if ui
-                        .selectable_label(selected == Some(b), format!("{name}{how}"))
+                    if crate::widget::choice(ui, selected == Some(b), format!("{name}{how}"))
                         .clicked()
                     {
                         select = Some(b);

@@ -54,8 +54,7 @@ impl Workbench {
                 .width(210.0)
                 .show_ui(ui, |ui| {
                     for entry in CATALOGUE {
-                        if ui
-                            .selectable_label(self.chassis.name() == entry.name, entry.name)
+                        if crate::widget::choice(ui, self.chassis.name() == entry.name, entry.name)
                             .on_hover_text(entry.summary)
                             .clicked()
                         {
