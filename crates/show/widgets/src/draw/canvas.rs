@@ -2,7 +2,7 @@
 //! colour (with a ground grid for a 3D view), and a line of text at its
 //! top-left corner.
 
-use egui::{Align2, Color32, FontId, Painter, Rect, Response, Sense, Vec2, vec2};
+use egui::{Color32, FontId, Painter, Rect, Response, Sense, Vec2, vec2};
 
 use super::scene3d::{Camera, draw_grid};
 use crate::theme;
@@ -35,11 +35,15 @@ pub fn canvas_3d(
 /// A line of text at the top-left corner of `rect`, `line` lines down (0
 /// for the first): a canvas's title, read-out or verdict.
 pub fn corner_text(painter: &Painter, rect: Rect, line: usize, text: String, color: Color32) {
-    painter.text(
-        rect.left_top() + vec2(8.0, 6.0 + 18.0 * line as f32),
-        Align2::LEFT_TOP,
-        text,
-        FontId::proportional(theme::TITLE_SIZE),
-        color,
+    let at = rect.left_top() + vec2(8.0, 6.0 + 18.0 * line as f32);
+    let galley = painter.layout_no_wrap(text, FontId::proportional(theme::TITLE_SIZE), color);
+    // On the canvas's own colour, so arrows and shading under the text
+    // cannot make it unreadable.
+    let backdrop = painter.ctx().global_style().visuals.extreme_bg_color;
+    painter.rect_filled(
+        Rect::from_min_size(at, galley.size()).expand(2.0),
+        3.0,
+        backdrop.gamma_multiply(0.9),
     );
+    painter.galley(at, galley, color);
 }
