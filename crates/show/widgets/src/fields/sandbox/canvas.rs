@@ -83,7 +83,14 @@ impl Sandbox {
                 streamlines(&painter, &view, &area, field, ink.text.gamma_multiply(0.55));
             }
         }
-        self.draw_pieces(&painter, &view, &ink);
+        // Range circles and bands end at the field's edge, not in the
+        // frame around it.
+        let field_rect = Rect::from_two_pos(
+            view.to_screen([area.x_min, area.y_min]),
+            view.to_screen([area.x_max, area.y_max]),
+        );
+        let inside = painter.with_clip_rect(field_rect.intersect(painter.clip_rect()));
+        self.draw_pieces(&inside, &view, &ink);
         let at = self.player.as_mut().map(|p| p.state().k);
         self.draw_runs(&painter, &view, &ink, at);
         self.draw_equilibria(&painter, &view, &ink);
