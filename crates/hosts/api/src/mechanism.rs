@@ -392,3 +392,25 @@ impl Query for Collide {
         Ok(report::collisions(model, &found, clearance))
     }
 }
+
+/// `kinolab export-urdf MODEL`: the model as URDF text, and what URDF
+/// could not say (`Mechanism.toUrdf()` in JavaScript).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct ExportUrdf;
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Exported {
+    pub urdf: String,
+    pub notices: Vec<String>,
+}
+
+impl Query for ExportUrdf {
+    type Report = Exported;
+    fn ask(&self, model: &Model) -> Result<Self::Report, Error> {
+        let written = urdf::write(model);
+        Ok(Exported {
+            urdf: written.text,
+            notices: written.notices,
+        })
+    }
+}

@@ -4,10 +4,10 @@
 
 use std::collections::BTreeMap;
 
-use kinolab_mechanism::{file::matrix_of, report, urdf, urdf::Robot};
+use kinolab_mechanism::{file::matrix_of, report, urdf::Robot};
 use serde::Serialize;
 
-use crate::mechanism::{Ik, Query, model, robot};
+use crate::mechanism::{Ik, Query, robot};
 use crate::{Error, Files, Operation, Source};
 
 /// How a robot's joints are set.
@@ -147,29 +147,5 @@ impl Operation for RobotIk {
         let mut answer = ik.ask(&robot.model)?;
         answer.q = robot.values(&answer.q);
         Ok(answer)
-    }
-}
-
-/// `kinolab export-urdf MODEL`: the model as URDF text, and what URDF
-/// could not say.
-#[derive(Debug, Clone)]
-pub struct ExportUrdf {
-    pub model: Source,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct Exported {
-    pub urdf: String,
-    pub notices: Vec<String>,
-}
-
-impl Operation for ExportUrdf {
-    type Report = Exported;
-    fn report(&self, files: &mut dyn Files) -> Result<Self::Report, Error> {
-        let written = urdf::write(&model(&self.model, files)?);
-        Ok(Exported {
-            urdf: written.text,
-            notices: written.notices,
-        })
     }
 }

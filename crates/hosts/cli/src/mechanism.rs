@@ -232,10 +232,7 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
 /// `kinolab export-urdf MODEL`: the URDF text on stdout, each thing URDF
 /// could not say as a note on stderr.
 pub(crate) fn export_urdf(model: &Path) -> Result<Printed, Failure> {
-    let export = robot::ExportUrdf {
-        model: source(model)?,
-    };
-    let answer = ask(&export, Some(model))?;
+    let answer = on(model, mechanism::ExportUrdf)?;
     let notices = answer["notices"].as_array().cloned().unwrap_or_default();
     for notice in notices.iter().filter_map(Value::as_str) {
         output::note(notice);

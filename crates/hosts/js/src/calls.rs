@@ -160,12 +160,6 @@ pub fn load_mechanism(model: Value) -> Result<Model, String> {
 }
 
 /// A question about a loaded model.
-/// A model as URDF, and what URDF could not say.
-pub fn to_urdf(model: &Model) -> Reply {
-    let written = kinolab_mechanism::urdf::write(model);
-    Ok(serde_json::json!({ "urdf": written.text, "notices": written.notices }))
-}
-
 pub fn on(model: &Model, query: &impl Query) -> Reply {
     mechanism::answer_on(model, query).map_err(|e| e.to_string())
 }

@@ -11,7 +11,7 @@
 //! The object holds only the model, which never changes; every call takes
 //! the joint values, so many views can share one model (the CLARAty way).
 
-use kinolab_api::mechanism::{Describe, Fk, HomeState, Jacobian, Place};
+use kinolab_api::mechanism::{Describe, ExportUrdf, Fk, HomeState, Jacobian, Place};
 use wasm_bindgen::prelude::*;
 
 use crate::{calls, from_js, thrown, to_js};
@@ -49,7 +49,7 @@ impl Mechanism {
     /// `{ urdf, notices }`.
     #[wasm_bindgen(js_name = toUrdf)]
     pub fn to_urdf(&self) -> Result<JsValue, JsError> {
-        to_js(calls::to_urdf(&self.model))
+        to_js(calls::on(&self.model, &ExportUrdf))
     }
 
     /// What `kinolab home-state` prints: the zero state clamped into the
