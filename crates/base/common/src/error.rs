@@ -90,56 +90,69 @@ pub fn finite_at(value: f64, field: impl FnOnce() -> String) -> Result<f64, Fiel
 /// finite), else an error naming `field`. Every number read from a file,
 /// an option or the JavaScript API passes through here or a stricter check.
 pub fn finite(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
-    if !value.is_finite() {
-        Err(FieldError::new(
-            field,
-            format!("must be a finite number, got {}", shown(value)),
-        ))
-    } else if value.abs() > MAGNITUDE_LIMIT {
-        Err(outside(
-            field.into(),
-            value,
-            (-MAGNITUDE_LIMIT, MAGNITUDE_LIMIT),
-            "",
-        ))
-    } else {
-        Ok(value)
-    }
+    in_range(field, value, -MAGNITUDE_LIMIT, MAGNITUDE_LIMIT)
 }
 
-/// `value` if it is finite and greater than 0, else an error naming `field`.
+/// "must be a finite number", for NaN and the infinities.
+fn not_finite(field: impl Into<String>, value: f64) -> FieldError {
+    FieldError::new(
+        field,
+        format!("must be a finite number, got {}", shown(value)),
+    )
+}
+
+/// `value` if it is finite and greater than 0 (and, like every number, at
+/// most [`MAGNITUDE_LIMIT`]), else an error naming `field`.
 pub fn positive(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
-    let field = field.into();
-    if finite(field.as_str(), value)? > 0.0 {
-        Ok(value)
-    } else {
-        Err(FieldError::new(
-            field,
-            format!("must be greater than 0, got {}", shown(value)),
-        ))
-    }
+    one_sided(field.into(), value, |v| v > 0.0, "must be greater than 0")
 }
 
-/// `value` if it is finite and not negative, else an error naming `field`.
+/// `value` if it is finite and not negative (and at most
+/// [`MAGNITUDE_LIMIT`]), else an error naming `field`.
 pub fn non_negative(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
-    let field = field.into();
-    if finite(field.as_str(), value)? >= 0.0 {
-        Ok(value)
-    } else {
+    one_sided(field.into(), value, |v| v >= 0.0, "must not be negative")
+}
+
+/// A check with only a lower bound: `rule` fails with `wanted`; a number
+/// that passes it but is too large says the upper limit it broke.
+fn one_sided(
+    field: String,
+    value: f64,
+    rule: impl Fn(f64) -> bool,
+    wanted: &str,
+) -> Result<f64, FieldError> {
+    if !value.is_finite() {
+        Err(not_finite(field, value))
+    } else if !rule(value) {
         Err(FieldError::new(
             field,
-            format!("must not be negative, got {}", shown(value)),
+            format!("{wanted}, got {}", shown(value)),
         ))
+    } else if value > MAGNITUDE_LIMIT {
+        Err(FieldError::new(
+            field,
+            format!(
+                "must be at most {}, got {}",
+                shown(MAGNITUDE_LIMIT),
+                shown(value)
+            ),
+        ))
+    } else {
+        Ok(value)
     }
 }
 
-/// `value` if it is finite and within `[lo, hi]`, else an error naming `field`.
+/// `value` if it is finite and within `[lo, hi]`, else an error naming
+/// `field` and the range it broke (the lab's own [`MAGNITUDE_LIMIT`] when
+/// that is narrower).
 pub fn in_range(field: impl Into<String>, value: f64, lo: f64, hi: f64) -> Result<f64, FieldError> {
-    let field = field.into();
-    if (lo..=hi).contains(&finite(field.as_str(), value)?) {
+    let range = (lo.max(-MAGNITUDE_LIMIT), hi.min(MAGNITUDE_LIMIT));
+    if !value.is_finite() {
+        Err(not_finite(field, value))
+    } else if (range.0..=range.1).contains(&value) {
         Ok(value)
     } else {
-        Err(outside(field, value, (lo, hi), ""))
+        Err(outside(field.into(), value, range, ""))
     }
 }
 
@@ -166,7 +179,9 @@ pub const LENGTH_RANGE: (f64, f64) = (1e-6, 1e6);
 pub fn length(field: impl Into<String>, value: f64) -> Result<f64, FieldError> {
     let field = field.into();
     let (lo, hi) = LENGTH_RANGE;
-    if (lo..=hi).contains(&positive(field.as_str(), value)?) {
+    if !value.is_finite() || value <= 0.0 {
+        positive(field, value)
+    } else if (lo..=hi).contains(&value) {
         Ok(value)
     } else {
         Err(outside(field, value, LENGTH_RANGE, " m"))
@@ -404,6 +419,45 @@ mod tests {
             "starts[3].x"
         );
         assert_eq!(FieldError::new("", "whole").to_string(), "whole");
+    }
+
+    #[test]
+    fn a_value_outside_a_range_hears_that_range_whatever_its_size() {
+        let said = |r: Result<f64, FieldError>| r.unwrap_err().message;
+        assert_eq!(
+            said(in_range("duration", 1e308, 0.0, 600.0)),
+            "must be from 0 to 600, got 1e308"
+        );
+        assert_eq!(
+            said(in_range("duration", -5.0, 0.0, 600.0)),
+            "must be from 0 to 600, got -5"
+        );
+        assert_eq!(
+            said(in_range("cost", -1e300, 0.0, 1.0)),
+            "must be from 0 to 1, got -1e300"
+        );
+        // A range wider than the lab's own limit is cut to it.
+        assert_eq!(
+            said(in_range("x", 2e9, -1e12, 1e12)),
+            "must be from -1e6 to 1e6, got 2e9"
+        );
+        assert_eq!(
+            said(positive("radius", 1e308)),
+            "must be at most 1e6, got 1e308"
+        );
+        assert_eq!(
+            said(positive("radius", -1e308)),
+            "must be greater than 0, got -1e308"
+        );
+        assert_eq!(
+            said(non_negative("noise", 1e9)),
+            "must be at most 1e6, got 1e9"
+        );
+        assert_eq!(
+            said(length("radius", 1e308)),
+            "must be from 1e-6 m to 1e6 m, got 1e308"
+        );
+        assert!(said(in_range("x", f64::INFINITY, 0.0, 1.0)).contains("finite"));
     }
 
     #[test]

@@ -2,6 +2,14 @@
 
 use crate::Failure;
 
+/// A seed for the random numbers (`--seed`): a whole number from 0 to
+/// 2^64 − 1; clap shows this message after the option's name.
+pub(crate) fn seed(text: &str) -> Result<u64, String> {
+    text.trim()
+        .parse::<u64>()
+        .map_err(|_| format!("a seed is a whole number from 0 to {}", u64::MAX))
+}
+
 /// Comma-separated finite numbers; an empty text is no numbers.
 pub(crate) fn numbers(option: &str, text: &str) -> Result<Vec<f64>, Failure> {
     if text.trim().is_empty() {

@@ -48,8 +48,8 @@ pub(crate) enum Command {
         /// Seconds to run at most.
         #[arg(long, default_value_t = 120.0, allow_hyphen_values = true)]
         duration: f64,
-        /// Seed for the sensor noise.
-        #[arg(long, default_value_t = 0)]
+        /// Seed for the sensor noise: a whole number from 0 to 2^64 − 1.
+        #[arg(long, default_value_t = 0, allow_hyphen_values = true, value_parser = crate::args::seed)]
         seed: u64,
         /// Keep one sample in this many steps (of 50 ms).
         #[arg(long, default_value_t = 1)]

@@ -930,6 +930,43 @@ fn arena_runs_each_architecture_and_scores_it() {
     );
 }
 
+/// A value outside an option's range hears that option's own range, however
+/// far outside it is; a seed says what a seed must be.
+#[test]
+fn arena_options_name_their_own_ranges() {
+    let arena = |extra: &[&str], want: &str| {
+        let mut args = vec!["arena", "catalogue:office", "--architecture", "hybrid"];
+        args.extend_from_slice(extra);
+        fails_with(&args, want);
+    };
+    arena(
+        &["--duration", "1e308"],
+        "--duration: must be from 0 to 600, got 1e308",
+    );
+    arena(
+        &["--duration", "-5"],
+        "--duration: must be from 0 to 600, got -5",
+    );
+    arena(
+        &["--planning-cost", "1e9"],
+        "--planning-cost: must be from 0 to 1000, got 1e9",
+    );
+    arena(
+        &["--perturb", "noise:1e9"],
+        "--perturb[0]: must be from 0 to 1, got 1e9",
+    );
+    arena(
+        &["--perturb", "door:5,1,5,2@1e300"],
+        "--perturb[0]: must be from 0 to 3600, got 1e300",
+    );
+    for seed in ["-1", "1.5", "many"] {
+        arena(
+            &["--seed", seed],
+            "a seed is a whole number from 0 to 18446744073709551615",
+        );
+    }
+}
+
 #[test]
 fn components_prints_the_trace_and_the_final_state() {
     let path = robot_file(

@@ -69,7 +69,10 @@ fn numbers(field: &str, text: &str, count: usize) -> Result<Vec<f64>, FieldError
             format!("needs {count} numbers, got {}", values.len()),
         ));
     }
-    for v in &values {
+    // Only NaN and the infinities are refused here: each number's own
+    // range (a time, a speed, a point in the world) is checked where it is
+    // used, so the message names that range.
+    for v in values.iter().filter(|v| !v.is_finite()) {
         finite(field, *v)?;
     }
     Ok(values)
