@@ -4,7 +4,7 @@
 // Serves DIST_DIR, opens a lesson by deep link, reloads, goes back and
 // forward, goes offline and reloads, takes screenshots into OUT_DIR, and
 // fails on any console error, page error or panic text.
-import { mkdir } from "node:fs/promises";
+import { mkdir, readFile } from "node:fs/promises";
 import assert from "node:assert/strict";
 import { serve, launch, waitForLab, waitForPage } from "./serve.mjs";
 
@@ -32,9 +32,13 @@ async function points(page) {
 // is well inside the window.
 async function bringIntoView(page, name) {
   const { height } = page.viewportSize();
+  let last = null;
   for (let i = 0; i < 60; i += 1) {
     const at = (await points(page))[name];
-    if (at && at.y > 200 && at.y < height - 200) {
+    // At the end of the page it cannot come further in: take it on screen.
+    const stuck = at && last && at.y === last.y && at.y > 20 && at.y < height - 20;
+    last = at;
+    if (stuck || (at && at.y > 200 && at.y < height - 200)) {
       // The page glides to a stop: aim once it stands still.
       await page.waitForTimeout(500);
       const still = (await points(page))[name];
@@ -68,6 +72,8 @@ async function assertWired(page) {
 }
 
 async function check(name, fn) {
+  // ONLY=text runs just the checks whose names contain it (while working on one).
+  if (process.env.ONLY && !name.includes(process.env.ONLY)) return;
   try {
     await fn();
     passed += 1;
@@ -301,6 +307,128 @@ try {
     await touch("touchEnd", []);
     await assertWired(small);
     await small.screenshot({ path: `${out}/wired-by-finger.png` });
+  });
+
+  // Progress: each check below opens its own browser context, so its own
+  // storage, like another browser or another computer.
+  const fresh = () => browser.newContext({ viewport: { width: 1280, height: 720 }, acceptDownloads: true });
+  const stored = (p) => p.evaluate(() => JSON.parse(localStorage.getItem("kinolab.progress") || "null"));
+  const opened = (p, n) => p.waitForFunction((n) => document.documentElement.dataset.kinolabOpened === n, String(n));
+
+  await check("two tabs keep both tabs' progress", async () => {
+    const both = await fresh();
+    try {
+      const [first, second] = [await both.newPage(), await both.newPage()];
+      watch(first, "tab 1");
+      watch(second, "tab 2");
+      // Tab 2 opens before tab 1 has done anything.
+      await second.goto(server.url);
+      await waitForLab(second);
+      await first.goto(`${server.url}#/automation/ways-to-move`);
+      await waitForLab(first);
+      await first.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("ways-to-move"));
+      // Tab 2 hears of it without a reload, and what it stores next keeps it.
+      await opened(second, 1);
+      await second.evaluate(() => { location.hash = "#/behaviours/emergence"; });
+      await waitForPage(second, "behaviours/emergence");
+      await second.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("behaviours/emergence"));
+      assert.deepEqual((await stored(second)).visited, ["automation/ways-to-move", "behaviours/emergence"]);
+      await opened(first, 2);
+    } finally {
+      await both.close();
+    }
+  });
+
+  await check("progress saved as a file loads in another browser; a foreign file is refused", async () => {
+    const [home, away] = [await fresh(), await fresh()];
+    try {
+      const here = await home.newPage();
+      watch(here, "saving");
+      await here.goto(`${server.url}?probe#/automation/ways-to-move`);
+      await waitForLab(here);
+      await here.evaluate(() => { location.hash = "#/"; });
+      await waitForPage(here, "");
+      const save = await bringIntoView(here, "progress.save");
+      const [download] = await Promise.all([here.waitForEvent("download"), here.mouse.click(save.x, save.y)]);
+      assert.equal(download.suggestedFilename(), "kinolab-progress.json");
+      const text = await readFile(await download.path(), "utf8");
+      assert.match(text, /"kind": "kinolab-progress"/);
+
+      const there = await away.newPage();
+      watch(there, "loading");
+      await there.goto(`${server.url}?probe`);
+      await waitForLab(there);
+      const give = async (name, body) => {
+        // A click while the page still glides can miss: try again.
+        for (let attempt = 0; ; attempt += 1) {
+          const load = await bringIntoView(there, "progress.load");
+          const [chooser] = await Promise.all([
+            there.waitForEvent("filechooser", { timeout: 5000 }).catch((e) => { if (attempt === 2) throw e; }),
+            there.mouse.click(load.x, load.y),
+          ]);
+          if (chooser) return chooser.setFiles({ name, mimeType: "application/json", buffer: Buffer.from(body) });
+        }
+      };
+      const notice = (start) => there.waitForFunction((s) => (document.documentElement.dataset.kinolabNotice || "").startsWith(s), start);
+      await give("kinolab-progress.json", text);
+      await notice("Loaded kinolab-progress.json: 1 lesson opened.");
+      await there.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("ways-to-move"));
+      const before = await stored(there);
+      await give("notes.json", '{"version":2,"visited":["a/b"]}');
+      await notice("notes.json was not loaded: it is not a Kinolab progress file.");
+      assert.deepEqual(await stored(there), before);
+    } finally {
+      await home.close();
+      await away.close();
+    }
+  });
+
+  await check("progress stored by the first version is read into today's format", async () => {
+    const old = await fresh();
+    try {
+      const v1 = await readFile("crates/show/app/src/progress/fixtures/v1.json", "utf8");
+      const p = await old.newPage();
+      watch(p, "migrating");
+      // The first version's progress appears under a running lab (as if an
+      // old copy wrote it); leaving the page must not write over it.
+      await p.goto(server.url);
+      await waitForLab(p);
+      await p.evaluate((v1) => localStorage.setItem("kinolab.progress", v1), v1);
+      await p.goto(`${server.url}#/behaviours/emergence`);
+      await p.reload();
+      await waitForLab(p);
+      await opened(p, 5);
+      await p.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes('"version":2'));
+      const now = await stored(p);
+      assert.ok(now.visited.includes("legged-locomotion/legs-and-wheels"), JSON.stringify(now.visited));
+      assert.equal(now.quizzes["wheeled-locomotion/wheel-kinds#0"].attempts, 2);
+    } finally {
+      await old.close();
+    }
+  });
+
+  await check("a browser that refuses storage: the lab works and says so once", async () => {
+    const blocked = await fresh();
+    try {
+      await blocked.addInitScript(() => {
+        Storage.prototype.setItem = function () {
+          throw new DOMException("The quota has been exceeded.", "QuotaExceededError");
+        };
+      });
+      const p = await blocked.newPage();
+      watch(p, "no storage");
+      await p.goto(`${server.url}?probe#/automation/ways-to-move`);
+      await waitForLab(p);
+      await p.waitForFunction(() => (document.documentElement.dataset.kinolabNotice || "").includes("not keeping your progress"));
+      const at = (await points(p))["notice.save"];
+      assert.ok(at, "the notice offers the progress file");
+      const [download] = await Promise.all([p.waitForEvent("download"), p.mouse.click(at.x, at.y)]);
+      assert.match(await readFile(await download.path(), "utf8"), /ways-to-move/);
+      await p.evaluate(() => { location.hash = "#/behaviours/emergence"; });
+      assert.equal(await waitForPage(p, "behaviours/emergence"), "behaviours/emergence");
+    } finally {
+      await blocked.close();
+    }
   });
 
   await check("no console errors, page errors or failed loads", async () => {

@@ -29,6 +29,8 @@ pub struct LessonState<'a> {
     /// Widget states from a link, by widget id, applied once.
     pub restore: &'a mut HashMap<String, String>,
     pub progress: &'a mut Progress,
+    /// The time now, to date an answer.
+    pub now: crate::progress::Millis,
     pub progress_changed: &'a mut bool,
     pub images: &'a mut ImageCache,
     /// Set when the learner follows a link to another page.
@@ -185,7 +187,7 @@ fn quiz_block_ui(ui: &mut egui::Ui, quiz: &Quiz, state: &mut LessonState<'_>, qu
     if quiz_ui(ui, &id, quiz, quiz_state, state.navigate)
         && let Some(correct) = quiz_state.verdict
     {
-        state.progress.record_answer(&id, correct);
+        state.progress.record_answer(&id, correct, state.now);
         *state.progress_changed = true;
     }
     ui.add_space(12.0);

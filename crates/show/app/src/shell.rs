@@ -10,9 +10,12 @@ use kinolab_widgets::widget::error_box;
 
 use crate::images::ImageCache;
 use crate::lesson_view::{LessonState, WidgetSlot, blocks_ui, inline_ui};
-use crate::progress::Progress;
+use crate::progress::{Millis, Progress};
+
+mod progress_card;
 use crate::quiz_view::QuizState;
 use crate::route::{self, Page};
+use progress_card::Notice;
 
 /// Narrower than this, the lesson list starts closed and opens over the
 /// page instead of beside it.
@@ -32,7 +35,13 @@ pub struct KinolabApp {
     /// Set when progress changed and has not been stored yet.
     progress_dirty: bool,
     /// A message for the learner, such as "progress was reset".
-    notice: Option<String>,
+    notice: Option<Notice>,
+    /// The browser refused to store progress (said once).
+    storage_blocked: bool,
+    /// Another tab chose a theme: apply it on the next frame.
+    theme_changed: bool,
+    /// The time now, as the host's clock gives it (see [`KinolabApp::set_clock`]).
+    now: Millis,
     quizzes: HashMap<String, QuizState>,
     widgets: HashMap<String, WidgetSlot>,
     /// Widget states from the link that opened the page, by widget id.
@@ -79,7 +88,10 @@ impl KinolabApp {
             page: Page::Home,
             progress,
             progress_dirty: notice.is_some(),
-            notice: notice.map(|n| n.0),
+            notice: notice.map(|n| Notice::problem(n.0)),
+            storage_blocked: false,
+            theme_changed: false,
+            now: 0,
             quizzes: HashMap::new(),
             widgets: HashMap::new(),
             restore: HashMap::new(),
@@ -113,7 +125,13 @@ impl KinolabApp {
     }
 
     pub fn notice(&self) -> Option<&str> {
-        self.notice.as_deref()
+        self.notice.as_ref().map(|n| n.text.as_str())
+    }
+
+    /// Tell the lab the time (milliseconds since 1970), before each frame:
+    /// answers and changes are dated so that the latest wins in a merge.
+    pub fn set_clock(&mut self, now: Millis) {
+        self.now = self.now.max(now);
     }
 
     /// The course, if the embedded lessons parsed.
@@ -197,13 +215,9 @@ impl KinolabApp {
     /// earlier visit come back as they were, unless a link says otherwise
     /// or they are already open.
     fn restore_kept_widgets(&mut self, address: &str) {
-        let prefix = format!("{address}@w");
-        for (id, state) in self.progress.widgets.range(prefix.clone()..) {
-            if !id.starts_with(&prefix) {
-                break;
-            }
+        for (id, state) in self.progress.widgets_of(address) {
             if !self.widgets.contains_key(id) && !self.restore.contains_key(id) {
-                self.restore.insert(id.clone(), state.clone());
+                self.restore.insert(id.to_owned(), state.to_owned());
             }
         }
     }
@@ -223,12 +237,8 @@ impl KinolabApp {
                 .strip_prefix(&prefix)
                 .and_then(|n| n.parse::<usize>().ok())
                 .and_then(|n| states.iter().find(|(k, _)| *k == n))
-                .map(|(_, s)| s.clone());
-            let changed = match now {
-                Some(state) => self.progress.widgets.insert(id, state.clone()) != Some(state),
-                None => self.progress.widgets.remove(&id).is_some(),
-            };
-            self.progress_dirty |= changed;
+                .map(|(_, s)| s.as_str());
+            self.progress_dirty |= self.progress.keep_widget(&id, now, self.now);
         }
     }
 
@@ -279,6 +289,9 @@ impl KinolabApp {
             self.style_ready = true;
             ui.ctx().request_repaint();
             return;
+        }
+        if std::mem::take(&mut self.theme_changed) {
+            self.apply_theme(ui.ctx());
         }
         let screen = ui.ctx().content_rect();
         let wide = screen.width() >= NARROW;
@@ -396,7 +409,7 @@ impl KinolabApp {
             (false, true) => ("Dark", "Switch to the dark theme"),
         };
         if ui.button(label).on_hover_text(hover).clicked() {
-            self.progress.dark = Some(!dark);
+            self.progress.choose_theme(Some(!dark), self.now);
             self.progress_dirty = true;
             self.apply_theme(ui.ctx());
         }
@@ -477,15 +490,7 @@ impl KinolabApp {
                 ui.vertical(|ui| {
                     ui.set_width(column - 16.0);
                     ui.add_space(12.0);
-                    if let Some(notice) = self.notice.clone() {
-                        ui.horizontal(|ui| {
-                            ui.label(RichText::new(notice.clone()).color(theme::error_color(ui)));
-                            if ui.button("Dismiss").clicked() {
-                                self.notice = None;
-                            }
-                        });
-                        ui.add_space(8.0);
-                    }
+                    self.notice_ui(ui);
                     match self.page.clone() {
                         Page::Home => self.home(ui),
                         Page::Lesson(address) => self.lesson_page(ui, &address),
@@ -517,7 +522,7 @@ impl KinolabApp {
                 .strong(),
         );
         ui.label(RichText::new(
-            "A robotics lab that runs in your browser. Each lesson is short, explains one idea per section, and lets you play with live widgets computed by the same tested code that the command-line tool uses. Your progress stays in this browser.",
+            "A robotics lab that runs in your browser. Each lesson is short, explains one idea per section, and lets you play with live widgets computed by the same tested code that the command-line tool uses. Your progress stays in this browser (see the end of this page).",
         ).size(theme::BODY_SIZE));
         ui.add_space(10.0);
         let mut target = None;
@@ -529,6 +534,7 @@ impl KinolabApp {
                 }
             }
         }
+        self.progress_card(ui);
         if let Some(page) = target {
             self.navigate(page);
         }
@@ -561,6 +567,7 @@ impl KinolabApp {
             restore: &mut self.restore,
             progress: &mut self.progress,
             progress_changed: &mut changed,
+            now: self.now,
             images: &mut self.images,
             navigate: &mut navigate,
         };

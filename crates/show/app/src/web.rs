@@ -3,9 +3,10 @@
 
 use std::cell::RefCell;
 
-use crate::progress::STORAGE_KEY;
 use crate::route::Page;
 use crate::shell::KinolabApp;
+
+pub mod storage;
 
 /// How many recent frames' CPU times are kept for the benchmark.
 const FRAME_HISTORY: usize = 2000;
@@ -55,6 +56,8 @@ pub fn kinolab_frame_times() -> Vec<f32> {
 /// Follow the back and forward buttons and edited URLs; note the last
 /// frame's CPU time.
 pub fn before_frame(app: &mut KinolabApp, frame: &eframe::Frame) {
+    app.set_clock(storage::now());
+    storage::take_other_tabs(app);
     if let Some(seconds) = frame.info().cpu_usage {
         FRAME_MS.with_borrow_mut(|f| {
             if f.len() == FRAME_HISTORY {
@@ -92,8 +95,8 @@ pub fn after_frame(app: &mut KinolabApp) {
         let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&hash));
         LAST_HASH.set(Some(current_hash()));
     }
-    if let Some(json) = app.take_dirty_progress() {
-        store_progress(&json);
+    if app.take_dirty_progress().is_some() {
+        storage::store(app);
     }
     let page = app.page().address();
     if app.frames_drawn() == 0 {
@@ -101,7 +104,13 @@ pub fn after_frame(app: &mut KinolabApp) {
     }
     let (right, screen) = app.extent();
     let extent = format!("{right:.0} {screen:.0}");
-    let signal = format!("{page}|{}|{extent}|{}", app.title(), app.points());
+    let notice = app.notice().unwrap_or_default().to_owned();
+    let opened = app.progress().visited.len().to_string();
+    let signal = format!(
+        "{page}|{}|{extent}|{}|{notice}|{opened}",
+        app.title(),
+        app.points()
+    );
     if LAST_SIGNAL.with_borrow(|last| *last != signal) {
         if let Some(document) = window().and_then(|w| w.document()) {
             document.set_title(&app.title());
@@ -111,6 +120,10 @@ pub fn after_frame(app: &mut KinolabApp) {
                 let _ = root.set_attribute("data-kinolab-extent", &extent);
                 // Where the widgets' named points are (for browser tests).
                 let _ = root.set_attribute("data-kinolab-points", app.points());
+                // The line over the page, and how many lessons were opened
+                // (what another tab's progress changes).
+                let _ = root.set_attribute("data-kinolab-notice", &notice);
+                let _ = root.set_attribute("data-kinolab-opened", &opened);
                 if root.get_attribute("data-kinolab-ready").is_none() {
                     // Milliseconds from navigation to the first drawn frame.
                     let now = window()
@@ -125,21 +138,6 @@ pub fn after_frame(app: &mut KinolabApp) {
             }
         }
         LAST_SIGNAL.set(signal);
-    }
-}
-
-fn storage() -> Option<web_sys::Storage> {
-    window().and_then(|w| w.local_storage().ok().flatten())
-}
-
-/// The stored progress text, if any.
-pub fn load_progress() -> Option<String> {
-    storage().and_then(|s| s.get_item(STORAGE_KEY).ok().flatten())
-}
-
-fn store_progress(json: &str) {
-    if let Some(s) = storage() {
-        let _ = s.set_item(STORAGE_KEY, json);
     }
 }
 

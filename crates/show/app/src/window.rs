@@ -2,6 +2,7 @@
 //! saving the files widgets ask for (natively into the working folder; in
 //! the browser as downloads, through [`crate::web`]).
 
+#[cfg(not(target_arch = "wasm32"))]
 use crate::progress;
 use crate::shell::KinolabApp;
 
@@ -10,7 +11,10 @@ impl eframe::App for KinolabApp {
         #[cfg(target_arch = "wasm32")]
         crate::web::before_frame(self, frame);
         #[cfg(not(target_arch = "wasm32"))]
-        let _ = frame;
+        {
+            let _ = frame;
+            self.set_clock(native_now());
+        }
         self.show(ui);
         for file in kinolab_widgets::export::take_save_requests(ui.ctx()) {
             save(&file);
@@ -40,7 +44,16 @@ impl eframe::App for KinolabApp {
         }
     }
 
+    /// eframe saves on leaving the page, on losing focus and every half
+    /// minute. In the browser that goes through the lab's own storage,
+    /// which merges what other tabs stored instead of overwriting it.
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        #[cfg(target_arch = "wasm32")]
+        {
+            let _ = storage;
+            crate::web::storage::store(self);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
         storage.set_string(progress::STORAGE_KEY, self.progress_json());
     }
 }
@@ -82,10 +95,18 @@ fn save(file: &kinolab_widgets::export::SaveRequest) {
     }
 }
 
+/// Milliseconds since 1970 by the computer's clock.
+#[cfg(not(target_arch = "wasm32"))]
+fn native_now() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_millis() as u64)
+}
+
 /// Set up the app for eframe: stored progress, the page the address names.
 pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
     #[cfg(target_arch = "wasm32")]
-    let (stored, touch) = (crate::web::load_progress(), crate::web::touch_screen());
+    let (stored, touch) = (crate::web::storage::load(), crate::web::touch_screen());
     #[cfg(not(target_arch = "wasm32"))]
     let (stored, touch) = (
         cc.storage.and_then(|s| s.get_string(progress::STORAGE_KEY)),
@@ -96,6 +117,14 @@ pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
         kinolab_widgets::probe::enable(&cc.egui_ctx);
     }
     let mut app = KinolabApp::new(stored.as_deref(), hash);
+    #[cfg(target_arch = "wasm32")]
+    {
+        if let (Some(text), Some(_)) = (&stored, app.notice()) {
+            // Unreadable progress is set aside, not overwritten.
+            crate::web::storage::set_aside(text);
+        }
+        crate::web::storage::listen(&cc.egui_ctx);
+    }
     if touch {
         // A finger drag over text scrolls from the very first touch.
         kinolab_widgets::theme::touch_first(&cc.egui_ctx);

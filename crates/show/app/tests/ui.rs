@@ -150,6 +150,55 @@ fn corrupted_progress_resets_with_a_visible_notice() {
     assert!(h.state().progress().visited.is_empty());
 }
 
+/// A progress file from another computer adds to what is here and says
+/// what it added; a foreign file changes nothing and says why.
+#[test]
+fn a_progress_file_merges_in_or_is_refused() {
+    let other = {
+        let mut a = KinolabApp::new(None, &format!("#/{LESSON}"));
+        a.set_clock(1_000);
+        a.progress_file()
+    };
+    let mut h = harness(KinolabApp::new(None, ""));
+    h.state_mut().set_clock(2_000);
+    h.state_mut()
+        .load_progress_file("kinolab-progress.json", other.as_bytes());
+    h.run();
+    h.get_by_label_contains("Loaded kinolab-progress.json: 1 lesson opened.");
+    assert!(h.state().progress().visited.contains(LESSON));
+    let before = h.state().progress().clone();
+    h.state_mut()
+        .load_progress_file("notes.json", br#"{"version":2,"visited":["x/y"]}"#);
+    h.run();
+    h.get_by_label_contains(
+        "notes.json was not loaded: it is not a Kinolab progress file. Your progress is unchanged.",
+    );
+    assert_eq!(h.state().progress(), &before);
+    h.get_by_label("Save my progress");
+    h.get_by_label("Load progress…");
+}
+
+/// Progress another tab stored joins this tab's; a blocked storage is said
+/// once, with the file offered.
+#[test]
+fn another_tabs_progress_merges_and_blocked_storage_is_said_once() {
+    let mut tab1 = KinolabApp::new(None, &format!("#/{LESSON}"));
+    tab1.set_clock(10);
+    let stored_by_tab1 = tab1.progress_json();
+    let mut h = harness(KinolabApp::new(None, "#/wheeled-locomotion/wheel-kinds"));
+    h.state_mut().merge_stored(&stored_by_tab1);
+    let visited = &h.state().progress().visited;
+    assert!(visited.contains(LESSON) && visited.contains("wheeled-locomotion/wheel-kinds"));
+    h.state_mut().storage_failed();
+    h.run();
+    h.get_by_label_contains("This browser is not keeping your progress");
+    h.get_by_label("Dismiss").click();
+    h.run();
+    h.state_mut().storage_failed();
+    h.run();
+    assert!(h.state().notice().is_none(), "said once");
+}
+
 #[test]
 fn an_unknown_lesson_address_says_so() {
     let h = harness(KinolabApp::new(None, "#/automation/no-such-lesson"));
