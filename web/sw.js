@@ -1,21 +1,39 @@
-// Kinolab's service worker: the lab works offline once it has been opened.
+// Kinolab's service worker: the lab works offline once it has been opened,
+// and a new release never mixes with the old one.
 //
-// Network first, cache as the fallback: online, learners always get the
-// newest lab; offline, they get the copy from their last visit. Trunk puts
-// content hashes in file names, so cached files never go stale silently.
-const CACHE = "kinolab-v1";
+// Each release has its own cache, named by VERSION, filled with the whole
+// lab at install (PRECACHE: the page, its script and its wasm, which holds
+// the lessons). Pages are served from the cache of the release that
+// controls them, so new wasm never meets an old page or the other way
+// round. A new release installs beside the old one and waits; the page
+// says a new version is ready and reloads into it when the learner agrees
+// (the message "activate"). Only then are older caches deleted.
+//
+// VERSION and PRECACHE are written by web/stamp-sw.mjs after each build.
+const VERSION = "unstamped";
+const PRECACHE = ["./", "./index.html"];
+const CACHE = `kinolab-${VERSION}`;
 
 self.addEventListener("install", (event) => {
-  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(["./", "./index.html"])));
-  self.skipWaiting();
+  event.waitUntil((async () => {
+    const cache = await caches.open(CACHE);
+    await cache.addAll(PRECACHE);
+    // The first release a browser sees starts at once: there is nothing
+    // older to mix with.
+    if (!self.registration.active) await self.skipWaiting();
+  })());
+});
+
+self.addEventListener("message", (event) => {
+  if (event.data === "activate") self.skipWaiting();
 });
 
 self.addEventListener("activate", (event) => {
-  event.waitUntil(
-    caches.keys()
-      .then((keys) => Promise.all(keys.filter((k) => k !== CACHE).map((k) => caches.delete(k))))
-      .then(() => self.clients.claim()),
-  );
+  event.waitUntil((async () => {
+    const keys = await caches.keys();
+    await Promise.all(keys.filter((k) => k.startsWith("kinolab-") && k !== CACHE).map((k) => caches.delete(k)));
+    await self.clients.claim();
+  })());
 });
 
 self.addEventListener("fetch", (event) => {
@@ -23,19 +41,18 @@ self.addEventListener("fetch", (event) => {
   if (request.method !== "GET" || new URL(request.url).origin !== self.location.origin) {
     return;
   }
-  event.respondWith(
-    fetch(request)
-      .then((response) => {
-        if (response.ok) {
-          const copy = response.clone();
-          caches.open(CACHE).then((cache) => cache.put(request, copy));
-        }
-        return response;
-      })
-      .catch(() =>
-        caches.match(request, { ignoreSearch: true }).then(
-          (cached) => cached || caches.match("./index.html"),
-        ),
-      ),
-  );
+  event.respondWith((async () => {
+    const cache = await caches.open(CACHE);
+    // Any address of the lab (`./`, `?probe`, `#/lesson`) is this release's
+    // page; other pages (the embed page) are their own files.
+    const path = new URL(request.url).pathname;
+    const lab = request.mode === "navigate" && (path.endsWith("/") || path.endsWith("/index.html"));
+    const cached = await cache.match(lab ? "./index.html" : request, { ignoreSearch: true });
+    if (cached) return cached;
+    const response = await fetch(request);
+    // Files this release fetches later (the embed page and its package)
+    // join its cache.
+    if (response.ok) cache.put(request, response.clone());
+    return response;
+  })());
 });

@@ -4,7 +4,8 @@
 // Serves DIST_DIR, opens a lesson by deep link, reloads, goes back and
 // forward, goes offline and reloads, takes screenshots into OUT_DIR, and
 // fails on any console error, page error or panic text.
-import { mkdir, readFile } from "node:fs/promises";
+import { cp, mkdir, readFile, readdir, rename, rm, writeFile } from "node:fs/promises";
+import { execFileSync } from "node:child_process";
 import assert from "node:assert/strict";
 import { serve, launch, waitForLab, waitForPage } from "./serve.mjs";
 
@@ -362,8 +363,15 @@ try {
         // A click while the page still glides can miss: try again.
         for (let attempt = 0; ; attempt += 1) {
           const load = await bringIntoView(there, "progress.load");
+          // Hover first, so the lab has drawn a frame with the pointer there.
+          await there.mouse.move(load.x, load.y);
+          await there.waitForTimeout(250);
           const [chooser] = await Promise.all([
-            there.waitForEvent("filechooser", { timeout: 5000 }).catch((e) => { if (attempt === 2) throw e; }),
+            there.waitForEvent("filechooser", { timeout: 5000 }).catch(async (e) => {
+              console.log(`  no file dialog (attempt ${attempt + 1}); points ${JSON.stringify(await points(there))}`);
+              await there.screenshot({ path: `${out}/no-dialog-${attempt}.png` });
+              if (attempt === 2) throw e;
+            }),
             there.mouse.click(load.x, load.y),
           ]);
           if (chooser) return chooser.setFiles({ name, mimeType: "application/json", buffer: Buffer.from(body) });
@@ -428,6 +436,54 @@ try {
       assert.equal(await waitForPage(p, "behaviours/emergence"), "behaviours/emergence");
     } finally {
       await blocked.close();
+    }
+  });
+
+  await check("a new release is offered, and replaces the old one whole when the learner agrees", async () => {
+    // Release B: release A's files under the new names a rebuild gives them,
+    // its page marked, its service worker stamped with its own version.
+    const b = `${out}/release-b`;
+    await rm(b, { recursive: true, force: true });
+    await cp(dist, b, { recursive: true });
+    let index = await readFile(`${b}/index.html`, "utf8");
+    const stem = /kinolab-lab-[0-9a-f]+/.exec(index)[0];
+    for (const name of await readdir(b)) {
+      if (name.startsWith(stem)) await rename(`${b}/${name}`, `${b}/${name.replace(stem, "kinolab-lab-b0b0b0b0")}`);
+    }
+    index = index.replaceAll(stem, "kinolab-lab-b0b0b0b0").replace("<head>", '<head><meta name="kinolab-release" content="B">');
+    await writeFile(`${b}/index.html`, index);
+    await rm(`${b}/index.html.br`, { force: true });
+    await rm(`${b}/index.html.gz`, { force: true });
+    execFileSync("node", ["web/stamp-sw.mjs", b]);
+
+    const release = (p) => p.evaluate(() => document.querySelector('meta[name="kinolab-release"]')?.content ?? "A");
+    const banner = (p) => p.waitForSelector("#kinolab-update:not([hidden])", { timeout: 30_000 });
+    const context = await fresh();
+    try {
+      const p = await context.newPage();
+      watch(p, "release");
+      await p.goto(`${server.url}#/automation/ways-to-move`);
+      await waitForLab(p);
+      await p.waitForFunction(() => navigator.serviceWorker.controller !== null, null, { timeout: 30_000 });
+      server.setRoot(b);
+      await p.evaluate(() => navigator.serviceWorker.getRegistration().then((r) => r.update()));
+      await banner(p);
+      // Until the learner agrees, a reload still runs release A, whole.
+      await p.reload();
+      assert.equal(await waitForLab(p), "automation/ways-to-move");
+      assert.equal(await release(p), "A");
+      await banner(p);
+      await Promise.all([p.waitForEvent("load"), p.click("#kinolab-update-reload")]);
+      assert.equal(await waitForLab(p), "automation/ways-to-move");
+      assert.equal(await release(p), "B");
+      const wasm = await p.evaluate(() => performance.getEntriesByType("resource").map((e) => e.name).filter((n) => n.endsWith(".wasm")));
+      assert.ok(wasm.length > 0 && wasm.every((n) => n.includes("kinolab-lab-b0b0b0b0")), JSON.stringify(wasm));
+      const caches = await p.evaluate(() => caches.keys());
+      const version = /const VERSION = "([0-9a-f]+)"/.exec(await readFile(`${b}/sw.js`, "utf8"))[1];
+      assert.deepEqual(caches, [`kinolab-${version}`]);
+    } finally {
+      server.setRoot(dist);
+      await context.close();
     }
   });
 

@@ -14,8 +14,10 @@ const TYPES = {
   ".webmanifest": "application/manifest+json",
 };
 
-/** Serve `root` on 127.0.0.1 at a free port; resolves to { url, close }. */
+/** Serve `root` on 127.0.0.1 at a free port; resolves to { url, setRoot, close }. */
 export function serve(root) {
+  // `setRoot` swaps the folder served, as a host does when a new release
+  // is deployed.
   const server = createServer(async (req, res) => {
     const path = normalize(decodeURIComponent(new URL(req.url, "http://x").pathname)).replace(/^(\.\.[/\\])+/, "");
     let file = join(root, path);
@@ -44,7 +46,11 @@ export function serve(root) {
   return new Promise((resolve) => {
     server.listen(0, "127.0.0.1", () => {
       const { port } = server.address();
-      resolve({ url: `http://127.0.0.1:${port}/`, close: () => new Promise((r) => server.close(r)) });
+      resolve({
+        url: `http://127.0.0.1:${port}/`,
+        setRoot: (folder) => { root = folder; },
+        close: () => new Promise((r) => server.close(r)),
+      });
     });
   });
 }
