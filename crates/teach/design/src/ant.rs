@@ -66,23 +66,16 @@ impl Beach {
         }
         let mut rng = SplitMix64::new(seed);
         let mut pebbles: Vec<Pebble> = Vec::with_capacity(count);
+        let mut placing = Placing::new();
         // Pebbles keep `GAP` apart, so no pocket is too narrow for an ant;
         // tries are bounded, so a crowded request gives fewer pebbles.
         for _ in 0..count * 40 {
             if pebbles.len() == count {
                 break;
             }
-            let r = 0.001 * 60f64.powf(rng.unit().powi(3));
-            let p = Pebble {
-                x: rng.range(0.0, LENGTH),
-                y: rng.range(-HALF_WIDTH, HALF_WIDTH),
-                r,
-            };
-            let clear = |q: [f64; 2]| (p.x - q[0]).hypot(p.y - q[1]) > p.r + 0.02;
-            let apart = pebbles
-                .iter()
-                .all(|o| (o.x - p.x).hypot(o.y - p.y) > GAP * (o.r + p.r));
-            if clear(START) && clear(GOAL) && apart {
+            let p = Pebble::candidate(&mut rng);
+            if p.clear_of_the_ends() && placing.apart(&p, &pebbles) {
+                placing.file(&p, pebbles.len());
                 pebbles.push(p);
             }
         }
@@ -111,6 +104,75 @@ impl Beach {
                 (bx.saturating_sub(1)..=(bx + 1).min(nx - 1)).map(move |i| j * nx + i)
             })
             .flat_map(move |k| self.buckets[k].iter().map(move |&i| &self.pebbles[i]))
+    }
+}
+
+impl Pebble {
+    /// A pebble where `rng` puts it: radius from 1 mm to 6 cm, mostly small.
+    fn candidate(rng: &mut SplitMix64) -> Self {
+        let r = 0.001 * 60f64.powf(rng.unit().powi(3));
+        Pebble {
+            x: rng.range(0.0, LENGTH),
+            y: rng.range(-HALF_WIDTH, HALF_WIDTH),
+            r,
+        }
+    }
+
+    /// Whether it leaves the start and the goal free.
+    fn clear_of_the_ends(&self) -> bool {
+        let clear = |q: [f64; 2]| (self.x - q[0]).hypot(self.y - q[1]) > self.r + 0.02;
+        clear(START) && clear(GOAL)
+    }
+}
+
+/// Pebbles placed so far, filed in cells at least as wide as two pebbles
+/// can be too close (`GAP` times the largest diameter), so a new pebble
+/// need only be checked against the cells around its own.
+struct Placing {
+    cells: Vec<Vec<usize>>,
+    nx: usize,
+    ny: usize,
+}
+
+/// A placing cell's side, m: at least `GAP` × the largest diameter (0.168 m).
+const PLACING: f64 = 0.17;
+const _: () = assert!(GAP * 2.0 * 0.06 <= PLACING);
+
+impl Placing {
+    fn new() -> Self {
+        let nx = (LENGTH / PLACING).ceil() as usize + 1;
+        let ny = (2.0 * HALF_WIDTH / PLACING).ceil() as usize + 1;
+        Self {
+            cells: vec![Vec::new(); nx * ny],
+            nx,
+            ny,
+        }
+    }
+
+    fn cell(&self, p: &Pebble) -> (usize, usize) {
+        let i = (p.x / PLACING).floor().clamp(0.0, (self.nx - 1) as f64) as usize;
+        let j = ((p.y + HALF_WIDTH) / PLACING)
+            .floor()
+            .clamp(0.0, (self.ny - 1) as f64) as usize;
+        (i, j)
+    }
+
+    /// Whether `p` keeps `GAP` from every pebble placed.
+    fn apart(&self, p: &Pebble, placed: &[Pebble]) -> bool {
+        let (ci, cj) = self.cell(p);
+        (cj.saturating_sub(1)..=(cj + 1).min(self.ny - 1)).all(|j| {
+            (ci.saturating_sub(1)..=(ci + 1).min(self.nx - 1)).all(|i| {
+                self.cells[j * self.nx + i].iter().all(|&k| {
+                    let o = &placed[k];
+                    (o.x - p.x).hypot(o.y - p.y) > GAP * (o.r + p.r)
+                })
+            })
+        })
+    }
+
+    fn file(&mut self, p: &Pebble, index: usize) {
+        let (i, j) = self.cell(p);
+        self.cells[j * self.nx + i].push(index);
     }
 }
 
@@ -270,6 +332,33 @@ pub fn sizes() -> impl Iterator<Item = f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The beach as placing every pebble against every other would make it.
+    fn brute_force(seed: u64, count: usize) -> Vec<Pebble> {
+        let mut rng = SplitMix64::new(seed);
+        let mut pebbles: Vec<Pebble> = Vec::new();
+        for _ in 0..count * 40 {
+            if pebbles.len() == count {
+                break;
+            }
+            let p = Pebble::candidate(&mut rng);
+            let apart = pebbles
+                .iter()
+                .all(|o| (o.x - p.x).hypot(o.y - p.y) > GAP * (o.r + p.r));
+            if p.clear_of_the_ends() && apart {
+                pebbles.push(p);
+            }
+        }
+        pebbles
+    }
+
+    #[test]
+    fn placing_by_cells_makes_the_same_beach_as_checking_every_pebble() {
+        for (seed, count) in [(0, DEFAULT_PEBBLES), (7, 300), (42, 5000)] {
+            let beach = Beach::new(seed, count).unwrap();
+            assert_eq!(beach.pebbles, brute_force(seed, count), "seed {seed}");
+        }
+    }
 
     #[test]
     fn the_same_seed_gives_the_same_beach_and_path() {

@@ -254,6 +254,8 @@ pub fn bench(args: &[String]) -> Result {
 /// regression folder and `--cases N` generated cases (100 000 unless
 /// given), with the table of counts per command and class. Failing cases
 /// are saved into `tests/fuzz/regressions/` so CI replays them forever.
+/// Then every widget fed as many generated and damaged links, each taken
+/// and drawn within 50 ms.
 pub fn fuzz(args: &[String]) -> Result {
     run(&mut cargo(&[
         "build",
@@ -262,6 +264,8 @@ pub fn fuzz(args: &[String]) -> Result {
         "kinolab-cli",
         "-p",
         "kinolab-fuzz",
+        "-p",
+        "kinolab-widget-fuzz",
     ]))?;
     let root = crate::setup::root();
     let release = root.join("target/release");
@@ -278,5 +282,14 @@ pub fn fuzz(args: &[String]) -> Result {
     if !args.iter().any(|a| a == "--cases") {
         cmd.args(["--cases", "100000"]);
     }
-    run(&mut cmd)
+    run(&mut cmd)?;
+    let passed: Vec<&str> = args.iter().map(String::as_str).collect();
+    let mut widgets = tool(
+        &release.join("kinolab-widget-fuzz").to_string_lossy(),
+        &passed,
+    );
+    if !args.iter().any(|a| a == "--cases") {
+        widgets.args(["--cases", "100000"]);
+    }
+    run(&mut widgets)
 }

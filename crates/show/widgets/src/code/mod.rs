@@ -50,6 +50,10 @@ struct Code {
     results: Option<Check>,
     submitted: bool,
     player: Option<Player<Stepping>>,
+    /// The stepper is still to be made for the world chosen, at this
+    /// moment: tracing a world can take a frame of its own, so a widget
+    /// made and then given a link traces once, when first drawn.
+    to_step: Option<Moment<()>>,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
@@ -82,9 +86,9 @@ impl Code {
             results: None,
             submitted: false,
             player: None,
+            to_step: Some(Moment::default()),
         };
         code.edited();
-        code.step_through(code.settings.world - 1);
         Ok(code)
     }
 
@@ -127,7 +131,18 @@ impl Code {
     }
 
     /// Record world `i` with the current code and show it in the stepper.
+    /// Make the stepper if it is still to be made.
+    fn ensure(&mut self) {
+        if let Some(moment) = self.to_step.take() {
+            self.step_through(self.settings.world - 1);
+            if let Some(p) = &mut self.player {
+                p.replay(&moment.events, moment.instant);
+            }
+        }
+    }
+
     fn step_through(&mut self, i: usize) {
+        self.to_step = None;
         let Some(world) = self.worlds.get(i) else {
             return;
         };
@@ -258,6 +273,7 @@ impl Code {
 
 impl LabWidget for Code {
     fn ui(&mut self, ui: &mut egui::Ui) {
+        self.ensure();
         self.header(ui);
         ui.add_space(4.0);
         if editor::editor(ui, &mut self.source, self.syntax.as_ref()) {
@@ -276,7 +292,11 @@ impl LabWidget for Code {
     }
 
     fn state(&self) -> Option<String> {
-        let moment = self.player.as_ref().map(Player::moment).unwrap_or_default();
+        let moment = match (&self.player, &self.to_step) {
+            (_, Some(pending)) => pending.clone(),
+            (Some(player), None) => player.moment(),
+            (None, None) => Moment::default(),
+        };
         link::write(NAME, &self.settings, &self.initial, &moment)
     }
 
@@ -284,14 +304,13 @@ impl LabWidget for Code {
         let (settings, moment): (Settings, Moment<()>) = link::read(NAME, state)?;
         let mut restored = Code::new(settings)?;
         restored.initial = self.initial.clone();
-        if let Some(p) = &mut restored.player {
-            p.replay(&moment.events, moment.instant);
-        }
+        restored.to_step = Some(moment);
         *self = restored;
         Ok(())
     }
 
     fn seek(&mut self, t: f64) {
+        self.ensure();
         if let Some(p) = &mut self.player {
             p.seek_time(t);
         }

@@ -99,6 +99,9 @@ struct AntBeach {
     player: Option<Player<Walking>>,
     /// (size, tortuosity) for this beach.
     curve: Vec<[f64; 2]>,
+    /// Body sizes still to walk for the curve, largest first: a new beach
+    /// fills its curve over a few frames, never in one long one.
+    curve_todo: Vec<f64>,
     feedback: Option<Feedback>,
 }
 
@@ -108,28 +111,50 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
 }
 
 impl AntBeach {
+    /// The widget with its settings; the beach is made when first needed
+    /// ([`AntBeach::ensure`]), since a link read right after would only
+    /// make it again.
     fn new(settings: Settings) -> Self {
-        let mut w = AntBeach {
+        AntBeach {
             initial: settings.clone(),
             settings,
             beach: None,
             walk: None,
             player: None,
             curve: Vec::new(),
+            curve_todo: Vec::new(),
             feedback: None,
-        };
-        w.new_beach();
-        w
+        }
+    }
+
+    /// Make the beach and the walk if they are not made yet.
+    fn ensure(&mut self) {
+        if self.beach.is_none() {
+            self.new_beach();
+        }
     }
 
     fn new_beach(&mut self) {
         self.beach = Beach::new(self.settings.seed, DEFAULT_PEBBLES).ok();
-        self.curve = self.beach.as_ref().map_or_else(Vec::new, |b| {
-            ant::sizes()
-                .filter_map(|s| ant::walk(b, s).ok().map(|w| [s, w.tortuosity]))
-                .collect()
-        });
+        self.curve.clear();
+        self.curve_todo = ant::sizes().collect();
+        self.curve_todo.reverse();
         self.rewalk();
+    }
+
+    /// Walk more sizes for the curve, for at most `budget` of wall time
+    /// (at least one size); whether sizes are left.
+    fn grow_curve(&mut self, budget: std::time::Duration) -> bool {
+        let started = web_time::Instant::now();
+        while let (Some(size), Some(beach)) = (self.curve_todo.pop(), &self.beach) {
+            if let Ok(w) = ant::walk(beach, size) {
+                self.curve.push([size, w.tortuosity]);
+            }
+            if started.elapsed() > budget {
+                break;
+            }
+        }
+        !self.curve_todo.is_empty()
     }
 
     /// The walk at the size set, on the player at its start.
@@ -295,6 +320,7 @@ impl AntBeach {
 
 impl LabWidget for AntBeach {
     fn ui(&mut self, ui: &mut egui::Ui) {
+        self.ensure();
         self.controls(ui);
         if let Some(player) = &mut self.player {
             player.controls(ui);
@@ -315,6 +341,9 @@ impl LabWidget for AntBeach {
                 w.turns,
                 if w.reached { "" } else { " · did not get across" }
             )).strong());
+        }
+        if self.grow_curve(std::time::Duration::from_millis(8)) {
+            ui.ctx().request_repaint();
         }
         let plot = self.plot(ui);
         self.exports(ui, beach.union(plot));
@@ -359,12 +388,14 @@ impl LabWidget for AntBeach {
     }
 
     fn seek(&mut self, t: f64) {
+        self.ensure();
         if let Some(player) = &mut self.player {
             player.seek_time(t);
         }
     }
 
     fn saved_run(&mut self) -> Option<SavedRun> {
+        self.ensure();
         let (player, walk) = (self.player.as_mut()?, self.walk.as_ref()?);
         let mut shows = vec![(
             "/path".to_owned(),
@@ -420,6 +451,7 @@ mod tests {
     }
 
     fn walked(w: &mut AntBeach) -> Vec<[f64; 2]> {
+        w.ensure();
         w.player
             .as_mut()
             .map(|p| p.state().walked().to_vec())
@@ -473,6 +505,7 @@ mod tests {
         let walk = file.walk().unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(walk.path[..51], walked(&mut w)[..]);
         // The plot as a table: a header and a row per size plotted.
+        assert!(!w.grow_curve(std::time::Duration::MAX));
         let csv = export::series_csv("size", &[("tortuosity", w.curve.clone())]);
         assert_eq!(csv.lines().count(), ant::sizes().count() + 1);
     }

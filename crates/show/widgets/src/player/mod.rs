@@ -97,7 +97,27 @@ pub struct Player<S: Simulation> {
     pub speed: Speed,
     /// Ticks owed to the wall clock and not yet run.
     owed: f64,
+    /// A link's replay still under way (see [`Player::replay`]).
+    catching: Option<Catching<S::Event>>,
 }
+
+/// What is left of a link's replay: the events still to spring, each at its
+/// time, and the instant to land on.
+#[derive(Debug, Clone)]
+struct Catching<E> {
+    events: std::collections::VecDeque<(f64, E)>,
+    instant: f64,
+}
+
+/// The most wall-clock time a replay runs in one frame: a link to an
+/// hour into a run must not freeze the page, so the rest runs over the
+/// next frames. (Debug builds, which only tests run, are ten times slower
+/// and get the whole replay at once, so a test sees the instant at once.)
+const CATCH_UP_BUDGET: std::time::Duration = if cfg!(debug_assertions) {
+    std::time::Duration::from_secs(30)
+} else {
+    std::time::Duration::from_millis(8)
+};
 
 impl<S: Simulation> Player<S> {
     /// A player at the start of `run`, paused.
@@ -115,6 +135,7 @@ impl<S: Simulation> Player<S> {
             playing: false,
             speed: Speed::One,
             owed: 0.0,
+            catching: None,
         }
     }
 
@@ -288,27 +309,84 @@ impl<S: Simulation> Player<S> {
         self.over = false;
     }
 
-    /// What a link carries of the run: the instant shown and the events.
+    /// What a link carries of the run: the instant shown and the events
+    /// (while a replay is under way, the instant and events it lands on).
     pub fn moment(&self) -> crate::link::Moment<S::Event> {
-        crate::link::Moment {
-            instant: self.time(),
-            events: self.events(),
+        let mut events = self.events();
+        let instant = match &self.catching {
+            Some(c) => {
+                events.extend(c.events.iter().cloned());
+                c.instant
+            }
+            None => self.time(),
+        };
+        crate::link::Moment { instant, events }
+    }
+
+    /// Replay a link's events (each at its time) and land on `instant`,
+    /// paused. What does not fit in this frame's budget runs over the
+    /// next frames ([`Player::catching_up`]).
+    pub fn replay(&mut self, events: &[(f64, S::Event)], instant: f64) {
+        self.start_replay(events, instant);
+        self.catch_up(CATCH_UP_BUDGET);
+    }
+
+    fn start_replay(&mut self, events: &[(f64, S::Event)], instant: f64) {
+        self.playing = false;
+        self.catching = Some(Catching {
+            events: events.iter().cloned().collect(),
+            instant,
+        });
+    }
+
+    /// Whether a link's replay is still running on.
+    pub fn catching_up(&self) -> bool {
+        self.catching.is_some()
+    }
+
+    /// Run a replay on for at most `budget` of wall time (at least a
+    /// chunk of ticks).
+    fn catch_up(&mut self, budget: std::time::Duration) {
+        let started = web_time::Instant::now();
+        while let Some(mut c) = self.catching.take() {
+            let target = c.events.front().map_or(c.instant, |(t, _)| *t);
+            if self.run_toward(target, 64) {
+                match c.events.pop_front() {
+                    Some((t, event)) => {
+                        self.seek_time(t);
+                        self.spring(event);
+                    }
+                    None => {
+                        self.seek_time(c.instant);
+                        return;
+                    }
+                }
+            }
+            self.catching = Some(c);
+            if started.elapsed() > budget {
+                return;
+            }
         }
     }
 
-    /// Replay a link's events (each at its time) and land on `instant`.
-    pub fn replay(&mut self, events: &[(f64, S::Event)], instant: f64) {
-        for (t, e) in events {
-            self.seek_time(*t);
-            self.spring(e.clone());
+    /// Record up to `most` more ticks toward time `t`; whether the record
+    /// reaches it (or the run is over).
+    fn run_toward(&mut self, t: f64, most: usize) -> bool {
+        for _ in 0..most {
+            if !self.times.last().is_some_and(|last| *last < t - 1e-9) || !self.step_forward() {
+                return true;
+            }
         }
-        self.seek_time(instant);
-        self.playing = false;
+        false
     }
 
     /// Run on as the wall clock says (`seconds` since the last frame at
     /// [`Player::speed`]), at most `most` ticks; whether anything moved.
     pub fn advance(&mut self, seconds: f64, most: usize) -> bool {
+        if self.catching.is_some() {
+            self.catch_up(CATCH_UP_BUDGET);
+            return true;
+        }
         if !self.playing {
             return false;
         }

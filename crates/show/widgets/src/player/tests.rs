@@ -205,3 +205,27 @@ fn the_run_ends_and_stays_ended() {
     p.seek_time(12.34);
     assert_eq!(p.cursor(), 247);
 }
+
+/// A link's replay spread over many frames lands where one all at once
+/// does, and meanwhile the link still says where it is going.
+#[test]
+fn a_replay_in_pieces_lands_where_one_at_once_does() {
+    let events = [(10.0, Kick(2.0)), (20.0, Kick(-1.0))];
+    let mut whole = Player::new(counter());
+    whole.replay(&events, 40.0);
+    assert!(!whole.catching_up());
+    let mut pieces = Player::new(counter());
+    pieces.start_replay(&events, 40.0);
+    let mut frames = 0;
+    while pieces.catching_up() {
+        assert_eq!(pieces.moment().instant, 40.0);
+        assert_eq!(pieces.moment().events, events.to_vec());
+        pieces.catch_up(std::time::Duration::ZERO);
+        frames += 1;
+    }
+    assert!(frames > 5, "{frames} pieces");
+    assert_eq!(pieces.moment(), whole.moment());
+    assert_eq!(pieces.state().value, whole.state().value);
+    // 200 ticks at 1, 200 at 2, 400 at -1.
+    assert_eq!(whole.state().value, 200.0 + 400.0 - 400.0);
+}

@@ -20,7 +20,7 @@ impl<S: Simulation> Player<S> {
     pub fn run(&mut self, ui: &egui::Ui, most: usize) {
         let seconds = f64::from(ui.input(|i| i.stable_dt).min(0.1));
         self.advance(seconds, most);
-        if self.playing {
+        if self.playing || self.catching_up() {
             crate::widget::animate(ui);
         }
     }
@@ -67,7 +67,10 @@ impl<S: Simulation> Player<S> {
     pub fn time_label(&self) -> String {
         let decimals = self.decimals();
         let mut text = format!("t = {} s", fixed(self.time(), decimals));
-        if !self.at_end() {
+        if let Some(c) = &self.catching {
+            let target = fixed(c.instant, decimals.min(1));
+            text += &format!(" (running on to the link's {target} s…)");
+        } else if !self.at_end() {
             let recorded = fixed(self.time_at(self.len()), decimals.min(1));
             text += &format!(" (recorded to {recorded} s)");
         }
