@@ -171,6 +171,140 @@ try {
     }
   });
 
+  // Progress: each check below opens its own browser context, so its own
+  // storage, like another browser or another computer.
+  const fresh = () => browser.newContext({ viewport: { width: 1280, height: 720 }, acceptDownloads: true });
+  const stored = (p) => p.evaluate(() => JSON.parse(localStorage.getItem("kinolab.progress") || "null"));
+  const opened = (p, n) => p.waitForFunction((n) => document.documentElement.dataset.kinolabOpened === n, String(n));
+
+  await check("two tabs keep both tabs' progress", async () => {
+    const both = await fresh();
+    try {
+      const [first, second] = [await both.newPage(), await both.newPage()];
+      watch(first, "tab 1");
+      watch(second, "tab 2");
+      // Tab 2 opens before tab 1 has done anything.
+      await second.goto(server.url);
+      await waitForLab(second);
+      await first.goto(`${server.url}#/automation/ways-to-move`);
+      await waitForLab(first);
+      await first.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("ways-to-move"));
+      // Tab 2 hears of it without a reload, and what it stores next keeps it.
+      await opened(second, 1);
+      await second.evaluate(() => { location.hash = "#/behaviours/emergence"; });
+      await waitForPage(second, "behaviours/emergence");
+      await second.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("behaviours/emergence"));
+      assert.deepEqual((await stored(second)).visited, ["automation/ways-to-move", "behaviours/emergence"]);
+      await opened(first, 2);
+    } finally {
+      await both.close();
+    }
+  });
+
+  await check("progress saved as a file loads in another browser; a foreign file is refused", async () => {
+    const [home, away] = [await fresh(), await fresh()];
+    try {
+      const here = await home.newPage();
+      watch(here, "saving");
+      await here.goto(`${server.url}?probe#/automation/ways-to-move`);
+      await waitForLab(here);
+      await here.evaluate(() => { location.hash = "#/"; });
+      await waitForPage(here, "");
+      const save = await bringIntoView(here, "progress.save");
+      const [download] = await Promise.all([here.waitForEvent("download"), here.mouse.click(save.x, save.y)]);
+      assert.equal(download.suggestedFilename(), "kinolab-progress.json");
+      const text = await readFile(await download.path(), "utf8");
+      assert.match(text, /"kind": "kinolab-progress"/);
+
+      // The browser's own file dialog cannot be driven headless from every
+      // page, so the page's file input is handed the file as if chosen:
+      // everything after the dialog (reading, checking, merging) is the lab's.
+      await away.addInitScript(() => {
+        const click = HTMLInputElement.prototype.click;
+        HTMLInputElement.prototype.click = function () {
+          const chosen = window.kinolabNextFile;
+          if (this.type !== "file" || !chosen) return click.call(this);
+          window.kinolabNextFile = null;
+          const files = new DataTransfer();
+          files.items.add(new File([chosen.body], chosen.name, { type: "application/json" }));
+          this.files = files.files;
+          this.dispatchEvent(new Event("change"));
+        };
+      });
+      const there = await away.newPage();
+      watch(there, "loading");
+      await there.goto(`${server.url}?probe`);
+      await waitForLab(there);
+      const give = async (name, body) => {
+        await there.evaluate((file) => { window.kinolabNextFile = file; }, { name, body });
+        const load = await bringIntoView(there, "progress.load");
+        await there.mouse.click(load.x, load.y);
+        await there.waitForFunction(() => window.kinolabNextFile === null, null, { timeout: 10_000 });
+      };
+      const notice = (start) => there.waitForFunction((s) => (document.documentElement.dataset.kinolabNotice || "").startsWith(s), start);
+      await give("kinolab-progress.json", text);
+      await notice("Loaded kinolab-progress.json: 1 lesson opened.");
+      await there.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("ways-to-move"));
+      const before = await stored(there);
+      await give("notes.json", '{"version":2,"visited":["a/b"]}');
+      await notice("notes.json was not loaded: it is not a Kinolab progress file.");
+      assert.deepEqual(await stored(there), before);
+    } finally {
+      await home.close();
+      await away.close();
+    }
+  });
+
+  await check("progress stored by the first version is read into today's format", async () => {
+    const old = await fresh();
+    try {
+      const v1 = await readFile("crates/show/app/src/progress/fixtures/v1.json", "utf8");
+      const p = await old.newPage();
+      watch(p, "migrating");
+      // The first version's progress appears under a running lab (as if an
+      // old copy wrote it); leaving the page must not write over it.
+      await p.goto(server.url);
+      await waitForLab(p);
+      await p.evaluate((v1) => localStorage.setItem("kinolab.progress", v1), v1);
+      await p.goto(`${server.url}#/behaviours/emergence`);
+      await waitForPage(p, "behaviours/emergence");
+      await p.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes('"version":2'));
+      await p.waitForLoadState("networkidle");
+      await p.reload();
+      await waitForLab(p);
+      await opened(p, 5);
+      const now = await stored(p);
+      assert.ok(now.visited.includes("legged-locomotion/legs-and-wheels"), JSON.stringify(now.visited));
+      assert.equal(now.quizzes["wheeled-locomotion/wheel-kinds#0"].attempts, 2);
+    } finally {
+      await old.close();
+    }
+  });
+
+  await check("a browser that refuses storage: the lab works and says so once", async () => {
+    const blocked = await fresh();
+    try {
+      await blocked.addInitScript(() => {
+        Storage.prototype.setItem = function () {
+          throw new DOMException("The quota has been exceeded.", "QuotaExceededError");
+        };
+      });
+      const p = await blocked.newPage();
+      watch(p, "no storage");
+      await p.goto(`${server.url}?probe#/automation/ways-to-move`);
+      await waitForLab(p);
+      await p.waitForFunction(() => (document.documentElement.dataset.kinolabNotice || "").includes("not keeping your progress"));
+      const at = (await points(p))["notice.save"];
+      assert.ok(at, "the notice offers the progress file");
+      const [download] = await Promise.all([p.waitForEvent("download"), p.mouse.click(at.x, at.y)]);
+      assert.match(await readFile(await download.path(), "utf8"), /ways-to-move/);
+      await p.evaluate(() => { location.hash = "#/behaviours/emergence"; });
+      assert.equal(await waitForPage(p, "behaviours/emergence"), "behaviours/emergence");
+    } finally {
+      await blocked.close();
+    }
+  });
+
   await check("the behaviour and potential-field lessons open with their widgets", async () => {
     for (const address of ["behaviours/coordination", "behaviours/building-in-layers", "potential-fields/local-minima", "potential-fields/ways-out"]) {
       await page.goto(`${server.url}#/${address}`);
@@ -310,132 +444,30 @@ try {
     await small.screenshot({ path: `${out}/wired-by-finger.png` });
   });
 
-  // Progress: each check below opens its own browser context, so its own
-  // storage, like another browser or another computer.
-  const fresh = () => browser.newContext({ viewport: { width: 1280, height: 720 }, acceptDownloads: true });
-  const stored = (p) => p.evaluate(() => JSON.parse(localStorage.getItem("kinolab.progress") || "null"));
-  const opened = (p, n) => p.waitForFunction((n) => document.documentElement.dataset.kinolabOpened === n, String(n));
-
-  await check("two tabs keep both tabs' progress", async () => {
-    const both = await fresh();
-    try {
-      const [first, second] = [await both.newPage(), await both.newPage()];
-      watch(first, "tab 1");
-      watch(second, "tab 2");
-      // Tab 2 opens before tab 1 has done anything.
-      await second.goto(server.url);
-      await waitForLab(second);
-      await first.goto(`${server.url}#/automation/ways-to-move`);
-      await waitForLab(first);
-      await first.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("ways-to-move"));
-      // Tab 2 hears of it without a reload, and what it stores next keeps it.
-      await opened(second, 1);
-      await second.evaluate(() => { location.hash = "#/behaviours/emergence"; });
-      await waitForPage(second, "behaviours/emergence");
-      await second.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("behaviours/emergence"));
-      assert.deepEqual((await stored(second)).visited, ["automation/ways-to-move", "behaviours/emergence"]);
-      await opened(first, 2);
-    } finally {
-      await both.close();
-    }
-  });
-
-  await check("progress saved as a file loads in another browser; a foreign file is refused", async () => {
-    const [home, away] = [await fresh(), await fresh()];
-    try {
-      const here = await home.newPage();
-      watch(here, "saving");
-      await here.goto(`${server.url}?probe#/automation/ways-to-move`);
-      await waitForLab(here);
-      await here.evaluate(() => { location.hash = "#/"; });
-      await waitForPage(here, "");
-      const save = await bringIntoView(here, "progress.save");
-      const [download] = await Promise.all([here.waitForEvent("download"), here.mouse.click(save.x, save.y)]);
-      assert.equal(download.suggestedFilename(), "kinolab-progress.json");
-      const text = await readFile(await download.path(), "utf8");
-      assert.match(text, /"kind": "kinolab-progress"/);
-
-      const there = await away.newPage();
-      watch(there, "loading");
-      await there.goto(`${server.url}?probe`);
-      await waitForLab(there);
-      const give = async (name, body) => {
-        // A click while the page still glides can miss: try again.
-        for (let attempt = 0; ; attempt += 1) {
-          const load = await bringIntoView(there, "progress.load");
-          // Hover first, so the lab has drawn a frame with the pointer there.
-          await there.mouse.move(load.x, load.y);
-          await there.waitForTimeout(250);
-          const [chooser] = await Promise.all([
-            there.waitForEvent("filechooser", { timeout: 5000 }).catch(async (e) => {
-              console.log(`  no file dialog (attempt ${attempt + 1}); points ${JSON.stringify(await points(there))}`);
-              await there.screenshot({ path: `${out}/no-dialog-${attempt}.png` });
-              if (attempt === 2) throw e;
-            }),
-            there.mouse.click(load.x, load.y),
-          ]);
-          if (chooser) return chooser.setFiles({ name, mimeType: "application/json", buffer: Buffer.from(body) });
-        }
-      };
-      const notice = (start) => there.waitForFunction((s) => (document.documentElement.dataset.kinolabNotice || "").startsWith(s), start);
-      await give("kinolab-progress.json", text);
-      await notice("Loaded kinolab-progress.json: 1 lesson opened.");
-      await there.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes("ways-to-move"));
-      const before = await stored(there);
-      await give("notes.json", '{"version":2,"visited":["a/b"]}');
-      await notice("notes.json was not loaded: it is not a Kinolab progress file.");
-      assert.deepEqual(await stored(there), before);
-    } finally {
-      await home.close();
-      await away.close();
-    }
-  });
-
-  await check("progress stored by the first version is read into today's format", async () => {
-    const old = await fresh();
-    try {
-      const v1 = await readFile("crates/show/app/src/progress/fixtures/v1.json", "utf8");
-      const p = await old.newPage();
-      watch(p, "migrating");
-      // The first version's progress appears under a running lab (as if an
-      // old copy wrote it); leaving the page must not write over it.
-      await p.goto(server.url);
-      await waitForLab(p);
-      await p.evaluate((v1) => localStorage.setItem("kinolab.progress", v1), v1);
-      await p.goto(`${server.url}#/behaviours/emergence`);
-      await p.reload();
-      await waitForLab(p);
-      await opened(p, 5);
-      await p.waitForFunction(() => (localStorage.getItem("kinolab.progress") || "").includes('"version":2'));
-      const now = await stored(p);
-      assert.ok(now.visited.includes("legged-locomotion/legs-and-wheels"), JSON.stringify(now.visited));
-      assert.equal(now.quizzes["wheeled-locomotion/wheel-kinds#0"].attempts, 2);
-    } finally {
-      await old.close();
-    }
-  });
-
-  await check("a browser that refuses storage: the lab works and says so once", async () => {
-    const blocked = await fresh();
-    try {
-      await blocked.addInitScript(() => {
-        Storage.prototype.setItem = function () {
-          throw new DOMException("The quota has been exceeded.", "QuotaExceededError");
-        };
-      });
-      const p = await blocked.newPage();
-      watch(p, "no storage");
-      await p.goto(`${server.url}?probe#/automation/ways-to-move`);
-      await waitForLab(p);
-      await p.waitForFunction(() => (document.documentElement.dataset.kinolabNotice || "").includes("not keeping your progress"));
-      const at = (await points(p))["notice.save"];
-      assert.ok(at, "the notice offers the progress file");
-      const [download] = await Promise.all([p.waitForEvent("download"), p.mouse.click(at.x, at.y)]);
-      assert.match(await readFile(await download.path(), "utf8"), /ways-to-move/);
-      await p.evaluate(() => { location.hash = "#/behaviours/emergence"; });
-      assert.equal(await waitForPage(p, "behaviours/emergence"), "behaviours/emergence");
-    } finally {
-      await blocked.close();
+  await check("damaged links to lessons with widgets open the lesson, never a frozen or broken tab", async () => {
+    // A seeded set (the native widget fuzz runs 100 000 cases): for each
+    // lesson, every widget slot gets a state cut short, altered, of the
+    // first format, hostile, or garbage.
+    let seed = 20261204;
+    const random = () => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed / 2147483648; };
+    const b = (text) => `b${Buffer.from(text).toString("base64url")}`;
+    const damaged = [
+      () => b("@t: 3600\n"),
+      () => b(`speed: 1e308\nlegs: -1\nsize: NaN\n@t: ${(random() * 60).toFixed(2)}\n`),
+      () => b("x".repeat(5000)),
+      () => b("@events: [[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]\n"),
+      () => `a${Buffer.from(Array.from({ length: 24 }, () => Math.floor(random() * 256))).toString("base64url")}`,
+      () => b("legs: 5\n@t: 2\n").slice(0, 1 + Math.floor(random() * 12)),
+      () => "%%%",
+      () => "b" + "A".repeat(9000),
+    ];
+    for (const lesson of [...wide, "legged-locomotion/legs-and-wheels", "behaviours/emergence", "software-stability/the-ant-on-the-beach", "motion-control/programming-the-robot"]) {
+      const query = [0, 1, 2, 3].map((w) => `w${w}=${damaged[Math.floor(random() * damaged.length)]()}`).join("&");
+      await page.goto(`${server.url}#/${lesson}?${query}`);
+      assert.equal(await waitForPage(page, lesson, 30_000), lesson);
+      // Still drawing: the next frame comes.
+      await page.waitForTimeout(300);
+      assert.equal(await page.evaluate(() => document.documentElement.dataset.kinolabPage), lesson);
     }
   });
 

@@ -109,6 +109,64 @@ mod tests {
         assert_eq!(one.hash(), "#/gallery/dh-link");
     }
 
+    use proptest::prelude::*;
+
+    /// Pieces damaged addresses are made of: real ones, cut and altered.
+    fn address() -> impl Strategy<Value = String> {
+        let piece = prop::sample::select(vec![
+            "#",
+            "/",
+            "?",
+            "&",
+            "=",
+            "w0",
+            "w99999999999999999999",
+            "gallery",
+            "automation",
+            "ways-to-move",
+            "..",
+            "%2F",
+            "%",
+            "\u{0}",
+            "é→",
+            "#dev",
+            " ",
+            "bAAAA",
+            "a",
+        ]);
+        (
+            prop::collection::vec(piece, 0..12),
+            prop::collection::vec(any::<char>(), 0..20),
+        )
+            .prop_map(|(pieces, noise)| {
+                let mut s: String = pieces.concat();
+                s.extend(noise);
+                s
+            })
+    }
+
+    proptest! {
+        /// Any address lands on a page, and the page's own address lands
+        /// on it again; widget states are read without panicking.
+        #[test]
+        fn any_address_lands_on_a_page(hash in address()) {
+            let page = Page::from_hash(&hash);
+            prop_assert_eq!(Page::from_hash(&page.hash()), page.clone());
+            let states = widget_states(&hash);
+            if let Page::Lesson(a) = &page {
+                let again = lesson_hash(a, &states);
+                prop_assert_eq!(widget_states(&again), states);
+            }
+        }
+    }
+
+    #[test]
+    fn a_huge_address_is_read_in_bounded_time() {
+        let hash = format!("#/{}?{}", "a/".repeat(100_000), "w1=x&".repeat(100_000));
+        assert_eq!(Page::from_hash(&hash), Page::Home);
+        assert!(widget_states(&hash).len() <= 100_000);
+    }
+
     #[test]
     fn widget_states_ride_after_the_question_mark() {
         let hash = "#/wheeled/kinds?w0=f,90,0,0.25,0.1;c,180,0,0.3,0.05,d=0.04&w2=x";
