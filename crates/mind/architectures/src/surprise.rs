@@ -69,10 +69,10 @@ fn numbers(field: &str, text: &str, count: usize) -> Result<Vec<f64>, FieldError
             format!("needs {count} numbers, got {}", values.len()),
         ));
     }
-    // Only NaN and the infinities are refused here: each number's own
-    // range (a time, a speed, a point in the world) is checked where it is
-    // used, so the message names that range.
-    for v in values.iter().filter(|v| !v.is_finite()) {
+    // Coordinates must be numbers the lab can compute with; a single
+    // number (a time, a noise, a speed) only needs to be finite here, since
+    // its own range is checked where it is used and the message names it.
+    for v in values.iter().filter(|v| count > 1 || !v.is_finite()) {
         finite(field, *v)?;
     }
     Ok(values)
