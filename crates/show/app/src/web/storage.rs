@@ -14,6 +14,10 @@ use crate::shell::KinolabApp;
 thread_local! {
     /// Progress other tabs stored since the last frame, oldest first.
     static FROM_OTHER_TABS: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+    /// What this tab last stored: while the storage still holds it, no
+    /// other tab has written and there is nothing to merge (a widget being
+    /// dragged stores its state every frame).
+    static LAST_STORED: RefCell<String> = const { RefCell::new(String::new()) };
 }
 
 fn storage() -> Result<web_sys::Storage, String> {
@@ -40,16 +44,20 @@ pub fn set_aside(text: &str) {
 /// Store the app's progress, merged with what other tabs stored; tell
 /// the app if the browser refuses.
 pub fn store(app: &mut KinolabApp) {
-    if let Some(stored) = load() {
+    if let Some(stored) = load()
+        && LAST_STORED.with_borrow(|last| *last != stored)
+    {
         app.merge_stored(&stored);
     }
-    let written = storage().and_then(|s| {
-        s.set_item(STORAGE_KEY, &app.progress_json())
-            .map_err(|e| format!("{e:?}"))
-    });
-    if let Err(why) = written {
-        log::warn!("progress not stored: {why}");
-        app.storage_failed();
+    let json = app.progress_json();
+    let written =
+        storage().and_then(|s| s.set_item(STORAGE_KEY, &json).map_err(|e| format!("{e:?}")));
+    match written {
+        Ok(()) => LAST_STORED.set(json),
+        Err(why) => {
+            log::warn!("progress not stored: {why}");
+            app.storage_failed();
+        }
     }
 }
 
