@@ -7,7 +7,7 @@
 import { cp, mkdir, readFile, readdir, rename, rm, writeFile } from "node:fs/promises";
 import { execFileSync } from "node:child_process";
 import assert from "node:assert/strict";
-import { serve, launch, waitForLab, waitForPage } from "./serve.mjs";
+import { serve, launch, waitForLab, waitForPage, points } from "./serve.mjs";
 
 const [dist = "dist", out = "target/e2e"] = process.argv.slice(2);
 await mkdir(out, { recursive: true });
@@ -16,18 +16,6 @@ const browser = await launch();
 const problems = [];
 let passed = 0;
 let failed = 0;
-
-// The points widgets publish on the page (a port of the component lab), in
-// CSS pixels: canvas content has no elements to aim at.
-async function points(page) {
-  const text = await page.evaluate(() => document.documentElement.dataset.kinolabPoints || "");
-  return Object.fromEntries(text.trim().split("\n").filter(Boolean).map((line) => {
-    const parts = line.split(" ");
-    const y = Number(parts.pop());
-    const x = Number(parts.pop());
-    return [parts.join(" "), { x, y }];
-  }));
-}
 
 // Scroll the lesson (mouse wheel at the page's left margin) until `name`
 // is well inside the window.

@@ -86,3 +86,15 @@ export async function waitForLab(page, timeout = 90_000) {
   await page.waitForFunction(() => document.documentElement.dataset.kinolabReady === "1", null, { timeout });
   return page.evaluate(() => document.documentElement.dataset.kinolabPage);
 }
+
+// The points widgets publish on the page (a port of the component lab), in
+// CSS pixels: canvas content has no elements to aim at.
+export async function points(page) {
+  const text = await page.evaluate(() => document.documentElement.dataset.kinolabPoints || "");
+  return Object.fromEntries(text.trim().split("\n").filter(Boolean).map((line) => {
+    const parts = line.split(" ");
+    const y = Number(parts.pop());
+    const x = Number(parts.pop());
+    return [parts.join(" "), { x, y }];
+  }));
+}

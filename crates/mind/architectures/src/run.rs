@@ -38,37 +38,81 @@ pub fn run(
     architecture: Architecture,
     every: usize,
 ) -> Result<ArenaReport, FieldError> {
-    if every == 0 {
-        return Err(FieldError::new("every", "must be at least 1"));
-    }
-    let mut arena = Arena::new(setup, &[architecture])?;
-    let sample = |arena: &Arena| {
-        let e = &arena.entrants[0];
-        let p = e.sim.pose;
-        Sample {
-            motion: Motion::new(e.sim.time, [p.x, p.y, p.theta], e.driven.vx, e.driven.omega),
-            activity: e.activity.clone(),
+    let mut recording = Recording::new(setup, architecture, every)?;
+    while recording.step() {}
+    Ok(recording.finish())
+}
+
+/// One architecture's run being recorded into its [`ArenaReport`] a step
+/// at a time, so a host can spread a long run over several frames and
+/// look at the arena after each step.
+#[derive(Debug)]
+pub struct Recording {
+    pub arena: Arena,
+    every: usize,
+    steps: usize,
+    report: ArenaReport,
+}
+
+impl Recording {
+    pub fn new(
+        setup: &ArenaSetup,
+        architecture: Architecture,
+        every: usize,
+    ) -> Result<Self, FieldError> {
+        if every == 0 {
+            return Err(FieldError::new("every", "must be at least 1"));
         }
-    };
-    let mut samples = vec![sample(&arena)];
-    let mut events = Vec::new();
-    let mut k = 0;
-    while !arena.done() {
-        events.extend(arena.step().into_iter().map(|(_, e)| e));
-        k += 1;
-        if k % every == 0 || arena.done() {
-            samples.push(sample(&arena));
-        }
+        let arena = Arena::new(setup, &[architecture])?;
+        let report = ArenaReport {
+            architecture,
+            surprises: setup.surprises.clone(),
+            planning_cost_ms: setup.planning_cost * 1e3,
+            samples: vec![sample(&arena)],
+            events: Vec::new(),
+            metrics: arena.entrants[0].scores.clone(),
+            error: None,
+        };
+        Ok(Self {
+            arena,
+            every,
+            steps: 0,
+            report,
+        })
     }
-    Ok(ArenaReport {
-        architecture,
-        surprises: setup.surprises.clone(),
-        planning_cost_ms: setup.planning_cost * 1e3,
-        samples,
-        events,
-        metrics: arena.entrants[0].scores.clone(),
-        error: arena.entrants[0].controller.failed().cloned(),
-    })
+
+    /// Run one step and record it; whether it ran (false once the run is over).
+    pub fn step(&mut self) -> bool {
+        if self.arena.done() {
+            return false;
+        }
+        let events = self.arena.step().into_iter().map(|(_, e)| e);
+        self.report.events.extend(events);
+        self.steps += 1;
+        if self.steps.is_multiple_of(self.every) || self.arena.done() {
+            self.report.samples.push(sample(&self.arena));
+        }
+        true
+    }
+
+    /// The report of the run so far (the whole run once
+    /// [`Recording::step`] has said it is over).
+    pub fn finish(mut self) -> ArenaReport {
+        let e = &self.arena.entrants[0];
+        self.report.metrics = e.scores.clone();
+        self.report.error = e.controller.failed().cloned();
+        self.report
+    }
+}
+
+/// The first entrant's motion and activity now.
+fn sample(arena: &Arena) -> Sample {
+    let e = &arena.entrants[0];
+    let p = e.sim.pose;
+    Sample {
+        motion: Motion::new(e.sim.time, [p.x, p.y, p.theta], e.driven.vx, e.driven.omega),
+        activity: e.activity.clone(),
+    }
 }
 
 /// A run as the command line and the JS API ask for it.

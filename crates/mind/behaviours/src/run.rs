@@ -483,36 +483,71 @@ pub struct RunReport {
 
 /// Run `setup` to the end.
 pub fn run(setup: &Setup) -> Result<RunReport, FieldError> {
-    let mut runner = Runner::new(setup)?;
-    let start = runner.sim.pose;
-    let mut samples = vec![Sample {
-        motion: Motion::new(0.0, [start.x, start.y, start.theta], 0.0, 0.0),
-        control: None,
-    }];
-    let mut control: Vec<Stretch> = Vec::new();
-    let mut events = Vec::new();
-    let mut metrics = Metrics {
-        reached: false,
-        time: None,
-        path_length: 0.0,
-        min_clearance: runner.sim.clearance(),
-        collisions: 0,
-    };
-    let mut k = 0;
-    while !runner.done() {
+    let mut recording = Recording::new(setup)?;
+    while recording.step().is_some() {}
+    Ok(recording.finish())
+}
+
+/// A run being recorded into its [`RunReport`] a step at a time, so a
+/// host can spread a long run over several frames and look at each
+/// step's [`Frame`] on the way.
+#[derive(Debug)]
+pub struct Recording {
+    pub runner: Runner,
+    output_every: usize,
+    steps: usize,
+    report: RunReport,
+}
+
+impl Recording {
+    pub fn new(setup: &Setup) -> Result<Self, FieldError> {
+        let runner = Runner::new(setup)?;
+        let start = runner.sim.pose;
+        let report = RunReport {
+            samples: vec![Sample {
+                motion: Motion::new(0.0, [start.x, start.y, start.theta], 0.0, 0.0),
+                control: None,
+            }],
+            control: Vec::new(),
+            events: Vec::new(),
+            metrics: Metrics {
+                reached: false,
+                time: None,
+                path_length: 0.0,
+                min_clearance: runner.sim.clearance(),
+                collisions: 0,
+            },
+            error: None,
+        };
+        Ok(Self {
+            runner,
+            output_every: setup.output_every.max(1),
+            steps: 0,
+            report,
+        })
+    }
+
+    /// Run one step and record it; `None` once the run is over.
+    pub fn step(&mut self) -> Option<Frame> {
+        let runner = &mut self.runner;
+        if runner.done() {
+            return None;
+        }
         let before = runner.sim.position();
         let t0 = runner.sim.time;
         let frame = runner.step();
-        k += 1;
+        self.steps += 1;
         let who = frame.decision.in_control.map(|i| runner.name(i).to_owned());
-        match control.last_mut() {
+        let report = &mut self.report;
+        match report.control.last_mut() {
             Some(last) if last.behaviour == who => last.to = runner.sim.time,
-            _ => control.push(Stretch {
+            _ => report.control.push(Stretch {
                 from: t0,
                 to: runner.sim.time,
                 behaviour: who.clone(),
             }),
         }
+        let metrics = &mut report.metrics;
         metrics.path_length += (runner.sim.position() - before).norm();
         metrics.min_clearance = metrics.min_clearance.min(frame.clearance);
         for e in &frame.events {
@@ -525,10 +560,10 @@ pub fn run(setup: &Setup) -> Result<RunReport, FieldError> {
                 EventKind::Appeared { .. } => {}
             }
         }
-        events.extend(frame.events);
-        if k % setup.output_every == 0 || runner.done() {
+        report.events.extend(frame.events.iter().cloned());
+        if self.steps.is_multiple_of(self.output_every) || runner.done() {
             let p = frame.pose;
-            samples.push(Sample {
+            report.samples.push(Sample {
                 motion: Motion::new(
                     runner.sim.time,
                     [p.x, p.y, p.theta],
@@ -538,12 +573,13 @@ pub fn run(setup: &Setup) -> Result<RunReport, FieldError> {
                 control: who,
             });
         }
+        Some(frame)
     }
-    Ok(RunReport {
-        samples,
-        control,
-        events,
-        metrics,
-        error: runner.error,
-    })
+
+    /// The report of the run so far (the whole run once
+    /// [`Recording::step`] has said it is over).
+    pub fn finish(mut self) -> RunReport {
+        self.report.error = self.runner.error;
+        self.report
+    }
 }

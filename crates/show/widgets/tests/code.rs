@@ -5,32 +5,13 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable};
-use kinolab_widgets::registry::{create, spec};
-use kinolab_widgets::widget::LabWidget;
 
-struct Host {
-    widget: Box<dyn LabWidget>,
-    ready: bool,
-}
+mod common;
+
+use common::{Host, KITTEST_STEP, shown_time, widget};
 
 fn harness(exercise: &str) -> Harness<'static, Host> {
-    let widget = create(&spec("code", &[("exercise", exercise)])).unwrap();
-    Harness::builder()
-        .with_size(egui::vec2(1200.0, 2600.0))
-        .build_ui_state(
-            |ui, host: &mut Host| {
-                if host.ready {
-                    host.widget.ui(ui);
-                } else {
-                    kinolab_widgets::theme::install(ui.ctx());
-                    host.ready = true;
-                }
-            },
-            Host {
-                widget,
-                ready: false,
-            },
-        )
+    common::harness(widget("code", &[("exercise", exercise)]), KITTEST_STEP)
 }
 
 /// Replace the editor's text with `code`, as typed.
@@ -53,20 +34,6 @@ fn labels(h: &Harness<'_, Host>) -> Vec<String> {
 
 fn has(h: &Harness<'_, Host>, start: &str) -> bool {
     labels(h).iter().any(|l| l.starts_with(start))
-}
-
-fn shown_time(h: &Harness<'_, Host>) -> f64 {
-    let label = labels(h)
-        .into_iter()
-        .find(|l| l.starts_with("t = "))
-        .expect("the player's time");
-    label
-        .trim_start_matches("t = ")
-        .split(' ')
-        .next()
-        .unwrap()
-        .parse()
-        .unwrap()
 }
 
 const MODEL: &str = "fn control(rho, alpha, beta) { [3.0 * rho, 8.0 * alpha - 1.5 * beta] }";
@@ -150,13 +117,13 @@ fn the_code_travels_in_the_link() {
     let code = "fn field(x, y) { [4.0 - x, 0.0 - y] }";
     type_code(&mut h, code);
     let link = h.state().widget.state().expect("changed code makes a link");
-    let mut again = create(&spec("code", &[("exercise", "field-pull")])).unwrap();
+    let mut again = widget("code", &[("exercise", "field-pull")]);
     again.restore(&link).unwrap();
     let run = again.saved_run().unwrap();
     assert_eq!(run.text, code);
     assert_eq!(run.args[..2], ["script", "check"]);
     // A link from another widget, or damaged code, is refused.
-    let mut other = create(&spec("code", &[])).unwrap();
+    let mut other = widget("code", &[]);
     assert!(other.restore("bAAAA").is_err());
 }
 

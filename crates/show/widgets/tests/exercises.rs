@@ -2,38 +2,16 @@
 //! The new widgets' exercises, driven the way a learner drives them, and
 //! graded right and wrong by the core.
 
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use kinolab_widgets::widget::LabWidget;
 
-fn widget(name: &str, params: &[(&str, &str)]) -> Box<dyn LabWidget> {
-    kinolab_widgets::registry::create(&kinolab_widgets::registry::spec(name, params)).unwrap()
-}
+mod common;
 
-/// A widget and whether the lab's fonts are in (they take effect a frame
-/// after they are installed).
-struct Host {
-    widget: Box<dyn LabWidget>,
-    ready: bool,
-}
+use common::{KITTEST_STEP, harness as harness_at, widget};
 
-fn harness(widget: Box<dyn LabWidget>) -> Harness<'static, Host> {
-    Harness::builder()
-        .with_size(egui::vec2(1200.0, 2400.0))
-        .build_ui_state(
-            |ui, host: &mut Host| {
-                if host.ready {
-                    host.widget.ui(ui);
-                } else {
-                    kinolab_widgets::theme::install(ui.ctx());
-                    host.ready = true;
-                }
-            },
-            Host {
-                widget,
-                ready: false,
-            },
-        )
+fn harness(
+    widget: Box<dyn kinolab_widgets::widget::LabWidget>,
+) -> egui_kittest::Harness<'static, common::Host> {
+    harness_at(widget, KITTEST_STEP)
 }
 
 #[test]

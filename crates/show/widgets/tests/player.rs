@@ -3,51 +3,13 @@
 //! back and on, and a link that carries the instant, driven as a learner
 //! drives them; the restored widget shows what the original showed.
 
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use kinolab_widgets::widget::LabWidget;
 
 use kinolab_widgets::registry::SIMULATING;
 
-fn widget(name: &str) -> Box<dyn LabWidget> {
-    kinolab_widgets::registry::create(&kinolab_widgets::registry::spec(name, &[])).unwrap()
-}
+mod common;
 
-struct Host {
-    widget: Box<dyn LabWidget>,
-    ready: bool,
-}
-
-fn harness(widget: Box<dyn LabWidget>) -> Harness<'static, Host> {
-    Harness::builder()
-        .with_size(egui::vec2(1200.0, 3000.0))
-        .build_ui_state(
-            |ui, host: &mut Host| {
-                if host.ready {
-                    host.widget.ui(ui);
-                } else {
-                    kinolab_widgets::theme::install(ui.ctx());
-                    host.ready = true;
-                }
-            },
-            Host {
-                widget,
-                ready: false,
-            },
-        )
-}
-
-/// The time the player shows, read from its label.
-fn shown_time(h: &Harness<'_, Host>) -> f64 {
-    use egui_kittest::kittest::NodeT as _;
-    let label = h
-        .get_all(egui_kittest::kittest::by())
-        .filter_map(|n| n.accesskit_node().value())
-        .find(|l| l.starts_with("t = "))
-        .expect("the player's time");
-    let text = label.trim_start_matches("t = ");
-    text.split(' ').next().unwrap().parse().unwrap()
-}
+use common::{KITTEST_STEP as FRAME, harness, shown_time, widget};
 
 /// Run `check` for every simulating widget; fail naming every widget
 /// that failed (so each can be worked on apart).
@@ -67,7 +29,7 @@ fn every_simulating_widget_plays_steps_and_scrubs_with_one_player() {
 
 fn plays_steps_and_scrubs(name: &str) {
     {
-        let mut h = harness(widget(name));
+        let mut h = harness(widget(name, &[]), FRAME);
         h.run_steps(2);
         assert_eq!(shown_time(&h), 0.0, "{name} starts paused at 0");
         h.get_by_label("Play").click();
@@ -94,11 +56,11 @@ fn plays_steps_and_scrubs(name: &str) {
             .widget
             .state()
             .expect("a played widget has a state");
-        let mut again = widget(name);
+        let mut again = widget(name, &[]);
         again.restore(&link).unwrap();
         let shown = h.state_mut().widget.saved_run();
         assert_eq!(again.saved_run(), shown, "{name}");
-        let mut h2 = harness(again);
+        let mut h2 = harness(again, FRAME);
         h2.run_steps(2);
         assert_eq!(shown_time(&h2), played, "{name} reopened at its instant");
     }
@@ -111,7 +73,7 @@ fn every_simulating_widget_saves_a_run_the_command_line_reads() {
 
 fn saves_a_run(name: &str) {
     {
-        let mut w = widget(name);
+        let mut w = widget(name, &[]);
         w.seek(0.5);
         let run = w
             .saved_run()

@@ -108,6 +108,14 @@ impl Beach {
 }
 
 impl Pebble {
+    /// Whether the square round the pebble reaching `gap` past its edge
+    /// (a little more, for rounding) holds the point: a cheap test that
+    /// every point within `gap` of its edge passes.
+    fn within(&self, x: f64, y: f64, gap: f64) -> bool {
+        let reach = (self.r + gap) * (1.0 + 1e-9);
+        (self.x - x).abs() <= reach && (self.y - y).abs() <= reach
+    }
+
     /// A pebble where `rng` puts it: radius from 1 mm to 6 cm, mostly small.
     fn candidate(rng: &mut SplitMix64) -> Self {
         let r = 0.001 * 60f64.powf(rng.unit().powi(3));
@@ -253,7 +261,7 @@ pub fn walk(beach: &Beach, size: f64) -> Result<Walk, FieldError> {
         // The nearest pebble that matters within reach, ahead of the ant.
         let ahead = beach
             .near(x, y)
-            .filter(|p| matters(p))
+            .filter(|p| matters(p) && p.within(x, y, reach))
             .filter_map(|p| {
                 let (dx, dy) = (p.x - x, p.y - y);
                 let gap = dx.hypot(dy) - p.r;
@@ -287,9 +295,9 @@ pub fn walk(beach: &Beach, size: f64) -> Result<Walk, FieldError> {
             heading += 0.2 * (wobble.unit() - 0.5);
         }
         let (nx, ny) = (x + step * trig::cos(heading), y + step * trig::sin(heading));
-        let blocked = beach
-            .near(nx, ny)
-            .any(|p| matters(p) && (p.x - nx).hypot(p.y - ny) < p.r + half);
+        let blocked = beach.near(nx, ny).any(|p| {
+            matters(p) && p.within(nx, ny, half) && (p.x - nx).hypot(p.y - ny) < p.r + half
+        });
         if blocked {
             heading += side * TURN;
             blocks = (blocks + 2).min(60);

@@ -3,7 +3,7 @@
 //! where something changes under the robot.
 
 use kinolab_architectures::placing::Placed;
-use kinolab_architectures::run::run as simulate;
+use kinolab_architectures::run::{ArenaReport, run as simulate};
 use kinolab_architectures::{Architecture, ArenaSetup, FieldError};
 use kinolab_common::display::fixed;
 use kinolab_world::{EventKind, Vec2};
@@ -96,12 +96,29 @@ fn replan() -> Vec<World> {
 }
 
 pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
-    let mut out = Outcome::new(world);
-    let setup = ArenaSetup {
+    let setup = setup(source, t);
+    judge(world, &setup, simulate(&setup, Architecture::Hybrid, EVERY))
+}
+
+/// Samples kept: one in this many steps.
+pub(crate) const EVERY: usize = 10;
+
+/// The trial's arena with the learner's sequencer in the hybrid robot.
+pub(crate) fn setup(source: &str, t: &Trial) -> ArenaSetup {
+    ArenaSetup {
         sequencer: Some(source.to_owned()),
         ..t.setup.clone()
-    };
-    let report = match simulate(&setup, Architecture::Hybrid, 10) {
+    }
+}
+
+/// The outcome of a run (or of one that could not start).
+pub(crate) fn judge(
+    world: &World,
+    setup: &ArenaSetup,
+    report: Result<ArenaReport, FieldError>,
+) -> Outcome {
+    let mut out = Outcome::new(world);
+    let report = match report {
         Ok(r) => r,
         Err(e) => return out.judged(Some(format!("the run could not start: {e}"))),
     };

@@ -4,7 +4,8 @@
 
 use kinolab_behaviours::coordinate::Coordinator;
 use kinolab_behaviours::library::{Behaviour, Named};
-use kinolab_behaviours::run::{Setup, run as simulate};
+use kinolab_behaviours::run::{RunReport, Setup, run as simulate};
+use kinolab_common::FieldError;
 use kinolab_common::display::fixed;
 use kinolab_world::{EventKind, World};
 
@@ -172,8 +173,13 @@ pub fn setup(hook: Hook, source: &str, t: &Trial) -> Setup {
 }
 
 pub(crate) fn run(hook: Hook, source: &str, world: &Graded, t: &Trial) -> Outcome {
+    judge(world, t, simulate(&setup(hook, source, t)))
+}
+
+/// The outcome of a run (or of one that could not start).
+pub(crate) fn judge(world: &Graded, t: &Trial, report: Result<RunReport, FieldError>) -> Outcome {
     let mut out = Outcome::new(world);
-    let report = match simulate(&setup(hook, source, t)) {
+    let report = match report {
         Ok(r) => r,
         Err(e) => return out.judged(Some(format!("the run could not start: {e}"))),
     };

@@ -3,14 +3,15 @@
 //! answered, and what it printed and plotted. Runs are deterministic, so
 //! the trace is the graded run itself, recorded.
 
-use kinolab_architectures::{Architecture, Arena, ArenaSetup};
-use kinolab_behaviours::run::Runner;
+use kinolab_architectures::Architecture;
+use kinolab_architectures::run::Recording as ArenaRecording;
+use kinolab_behaviours::run::{Frame, Recording};
 use kinolab_fields::Field;
 use kinolab_fields::descend::descend;
 use kinolab_script::Output;
 use kinolab_world::World as Place;
 
-use crate::{Exercise, Hook, Outcome, Trial, World};
+use crate::{Exercise, Outcome, Trial, World, architecture, behaviours};
 
 /// What the stepper draws under the ticks.
 #[derive(Debug, Clone)]
@@ -59,13 +60,134 @@ pub const MAX_TICKS: usize = 4000;
 impl Exercise {
     /// `source` run on `world`, recorded tick by tick.
     pub fn trace(&self, source: &str, world: &World) -> Trace {
-        let outcome = self.run(source, world);
-        let (scene, path, mut ticks) = match &world.trial {
-            Trial::Control(t) => control(source, t),
-            Trial::Behaviours(t) => behaviours(self.hook, source, t),
-            Trial::Field(t) => field(source, t),
-            Trial::Legs(t) => legs(source, t),
-            Trial::Arena(t) => arena(source, t),
+        let mut tracing = self.tracing(source, world);
+        while !tracing.advance(STEPS_PER_ADVANCE) {}
+        tracing.finish()
+    }
+
+    /// `source` on `world`, to be recorded a piece at a time (see [`Tracing`]).
+    pub fn tracing(&self, source: &str, world: &World) -> Tracing {
+        let job = match &world.trial {
+            Trial::Behaviours(t) => {
+                let setup = behaviours::setup(self.hook, source, t);
+                match Recording::new(&setup) {
+                    Ok(recording) => Job::Behaviours(Box::new(BehavioursJob::new(recording, t))),
+                    Err(e) => Job::Done(Box::new(Trace {
+                        scene: Scene::World(Box::new(t.world.clone())),
+                        path: Vec::new(),
+                        ticks: Vec::new(),
+                        outcome: behaviours::judge(world, t, Err(e)),
+                    })),
+                }
+            }
+            Trial::Arena(t) => {
+                let setup = architecture::setup(source, t);
+                match ArenaRecording::new(&setup, Architecture::Hybrid, architecture::EVERY) {
+                    Ok(recording) => Job::Arena(Box::new(ArenaJob::new(recording, setup))),
+                    Err(e) => Job::Done(Box::new(Trace {
+                        scene: Scene::World(Box::new(t.setup.world.clone())),
+                        path: Vec::new(),
+                        ticks: Vec::new(),
+                        outcome: architecture::judge(world, &setup, Err(e)),
+                    })),
+                }
+            }
+            // Short runs: recorded at once.
+            Trial::Control(t) => self.at_once(source, world, control(source, t)),
+            Trial::Field(t) => self.at_once(source, world, field(source, t)),
+            Trial::Legs(t) => self.at_once(source, world, legs(source, t)),
+        };
+        Tracing {
+            job,
+            world: world.clone(),
+        }
+    }
+
+    fn at_once(&self, source: &str, world: &World, (scene, path, ticks): Recorded) -> Job {
+        Job::Done(Box::new(Trace {
+            scene,
+            path,
+            ticks,
+            outcome: self.run(source, world),
+        }))
+    }
+}
+
+/// Steps [`Exercise::trace`] runs between looks at whether the run is over.
+const STEPS_PER_ADVANCE: usize = 256;
+
+/// A trace being recorded. A long run (a minute of an arena, a few
+/// thousand calls of the learner's code) can take longer than a frame of
+/// the page, so a host runs it a number of steps per frame with
+/// [`Tracing::advance`] and takes the trace with [`Tracing::finish`] once
+/// that says it is over. The run recorded is the graded run itself: its
+/// outcome is judged from the same steps.
+#[derive(Debug)]
+pub struct Tracing {
+    job: Job,
+    world: World,
+}
+
+#[derive(Debug)]
+enum Job {
+    Done(Box<Trace>),
+    Behaviours(Box<BehavioursJob>),
+    Arena(Box<ArenaJob>),
+}
+
+impl Tracing {
+    /// Run at most `steps` more steps; whether the run is over.
+    pub fn advance(&mut self, steps: usize) -> bool {
+        match &mut self.job {
+            Job::Done(_) => true,
+            Job::Behaviours(job) => job.advance(steps),
+            Job::Arena(job) => job.advance(steps),
+        }
+    }
+
+    /// How far the run has got, from 0 to 1.
+    pub fn progress(&self) -> f64 {
+        let (now, end) = match &self.job {
+            Job::Done(_) => return 1.0,
+            Job::Behaviours(job) => (job.recording.runner.sim.time, job.duration),
+            Job::Arena(job) => (job.recording.arena.entrants[0].sim.time, job.setup.duration),
+        };
+        if end > 0.0 {
+            (now / end).clamp(0.0, 1.0)
+        } else {
+            1.0
+        }
+    }
+
+    /// The trace (of the run so far, when called before [`Tracing::advance`]
+    /// said it is over).
+    pub fn finish(self) -> Trace {
+        let (scene, path, mut ticks, outcome) = match self.job {
+            Job::Done(trace) => return *trace,
+            Job::Behaviours(job) => {
+                let BehavioursJob {
+                    recording,
+                    trial,
+                    scene,
+                    path,
+                    ticks,
+                    ..
+                } = *job;
+                let outcome = behaviours::judge(&self.world, &trial, Ok(recording.finish()));
+                (scene, path, ticks, outcome)
+            }
+            Job::Arena(job) => {
+                let ArenaJob {
+                    recording,
+                    setup,
+                    scene,
+                    path,
+                    ticks,
+                    ..
+                } = *job;
+                let outcome = architecture::judge(&self.world, &setup, Ok(recording.finish()));
+                (scene, path, ticks, outcome)
+            }
         };
         thin(&mut ticks);
         Trace {
@@ -136,61 +258,84 @@ fn control(source: &str, t: &crate::control::Trial) -> Recorded {
     (Scene::Plane { area }, path, ticks)
 }
 
-fn behaviours(hook: Hook, source: &str, t: &crate::behaviours::Trial) -> Recorded {
-    let scene = Scene::World(Box::new(t.world.clone()));
-    let Ok(mut runner) = Runner::new(&crate::behaviours::setup(hook, source, t)) else {
-        return (scene, Vec::new(), Vec::new());
-    };
-    let start = runner.sim.pose;
-    let mut path = vec![[start.x, start.y]];
-    let mut ticks = Vec::new();
-    while !runner.done() {
-        let frame = runner.step();
-        let p = &frame.percepts;
-        path.push([frame.pose.x, frame.pose.y]);
-        let Some(call) = frame.calls.into_iter().next() else {
-            continue;
-        };
-        let goal = p.goal.map_or("()".to_owned(), |g| {
-            format!(
-                "bearing {}, distance {}",
-                number(g.bearing),
-                number(g.distance)
-            )
-        });
-        let nearest = p
-            .rays
-            .iter()
-            .min_by(|a, b| a.range.total_cmp(&b.range))
-            .map_or("no rays".to_owned(), |r| {
-                format!("{} m at {}", number(r.range), number(r.angle))
-            });
-        let [front, left, back, right] = p.bumpers;
-        ticks.push(Tick {
-            t: p.time,
-            pose: [frame.pose.x, frame.pose.y, frame.pose.theta],
-            given: given(&[
-                ("p.t", number(p.time)),
-                ("p.goal", goal),
-                ("nearest ray", nearest),
-                (
-                    "p.bumpers",
-                    format!("front {front}, left {left}, back {back}, right {right}"),
-                ),
-                (
-                    "p.speed",
-                    format!("[{}, {}]", number(p.speed[0]), number(p.speed[1])),
-                ),
-            ]),
-            returned: call.returned,
-            output: call.output,
-            rays: p.rays.iter().map(|r| [r.angle, r.range]).collect(),
-            feet: Vec::new(),
-        });
-    }
-    (scene, path, ticks)
+/// A behaviour run on the way: the percepts the learner's function saw
+/// and what it answered, each step.
+#[derive(Debug)]
+struct BehavioursJob {
+    recording: Recording,
+    trial: behaviours::Trial,
+    duration: f64,
+    scene: Scene,
+    path: Vec<[f64; 2]>,
+    ticks: Vec<Tick>,
 }
 
+impl BehavioursJob {
+    fn new(recording: Recording, t: &behaviours::Trial) -> Self {
+        let start = recording.runner.sim.pose;
+        Self {
+            recording,
+            trial: t.clone(),
+            duration: t.duration,
+            scene: Scene::World(Box::new(t.world.clone())),
+            path: vec![[start.x, start.y]],
+            ticks: Vec::new(),
+        }
+    }
+
+    fn advance(&mut self, steps: usize) -> bool {
+        for _ in 0..steps {
+            let Some(frame) = self.recording.step() else {
+                return true;
+            };
+            self.path.push([frame.pose.x, frame.pose.y]);
+            self.ticks.extend(behaviours_tick(frame));
+        }
+        false
+    }
+}
+
+/// The learner's call in `frame`, if the frame had one.
+fn behaviours_tick(frame: Frame) -> Option<Tick> {
+    let p = &frame.percepts;
+    let call = frame.calls.into_iter().next()?;
+    let goal = p.goal.map_or("()".to_owned(), |g| {
+        format!(
+            "bearing {}, distance {}",
+            number(g.bearing),
+            number(g.distance)
+        )
+    });
+    let nearest = p
+        .rays
+        .iter()
+        .min_by(|a, b| a.range.total_cmp(&b.range))
+        .map_or("no rays".to_owned(), |r| {
+            format!("{} m at {}", number(r.range), number(r.angle))
+        });
+    let [front, left, back, right] = p.bumpers;
+    Some(Tick {
+        t: p.time,
+        pose: [frame.pose.x, frame.pose.y, frame.pose.theta],
+        given: given(&[
+            ("p.t", number(p.time)),
+            ("p.goal", goal),
+            ("nearest ray", nearest),
+            (
+                "p.bumpers",
+                format!("front {front}, left {left}, back {back}, right {right}"),
+            ),
+            (
+                "p.speed",
+                format!("[{}, {}]", number(p.speed[0]), number(p.speed[1])),
+            ),
+        ]),
+        returned: call.returned,
+        output: call.output,
+        rays: p.rays.iter().map(|r| [r.angle, r.range]).collect(),
+        feet: Vec::new(),
+    })
+}
 fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
     let area = [-0.5, -2.5, 7.0, 2.5];
     let Ok(f) = Field::from_json(&crate::fields::field_file(source, t.base)) else {
@@ -283,52 +428,71 @@ fn legs(source: &str, t: &crate::legs::Trial) -> Recorded {
     (scene, Vec::new(), ticks)
 }
 
-fn arena(source: &str, t: &crate::architecture::Trial) -> Recorded {
-    let setup = ArenaSetup {
-        sequencer: Some(source.to_owned()),
-        ..t.setup.clone()
-    };
-    let Ok(mut arena) = Arena::new(&setup, &[Architecture::Hybrid]) else {
-        return (
-            Scene::World(Box::new(t.setup.world.clone())),
-            Vec::new(),
-            Vec::new(),
-        );
-    };
-    let scene = Scene::World(Box::new(arena.entrants[0].sim.world.clone()));
-    let start = arena.entrants[0].sim.pose;
-    let mut path = vec![[start.x, start.y]];
-    let mut ticks = Vec::new();
-    while !arena.done() {
-        arena.step();
-        let e = &arena.entrants[0];
-        let pose = e.sim.pose;
-        path.push([pose.x, pose.y]);
-        let Some(asked) = e.controller.asked() else {
-            continue;
-        };
-        if ticks
-            .last()
-            .is_some_and(|last: &Tick| last.t >= e.sim.time - 1e-9)
-        {
-            continue;
-        }
-        ticks.push(Tick {
-            t: e.sim.time,
-            pose: [pose.x, pose.y, pose.theta],
-            given: asked
-                .given
-                .iter()
-                .map(|(k, v)| (format!("state.{k}"), v.clone()))
-                .collect(),
-            returned: asked.returned.clone(),
-            output: asked.output.clone(),
-            rays: Vec::new(),
-            feet: Vec::new(),
-        });
-        if e.controller.failed().is_some() {
-            break;
+/// The hybrid robot's run on the way: what its sequencer (the learner's
+/// `next`) was asked and answered, each time it was asked. After the
+/// sequencer fails the run goes on to its end (it is graded that way),
+/// with nothing more to show.
+#[derive(Debug)]
+struct ArenaJob {
+    recording: ArenaRecording,
+    setup: kinolab_architectures::ArenaSetup,
+    scene: Scene,
+    path: Vec<[f64; 2]>,
+    ticks: Vec<Tick>,
+    /// The sequencer has failed: nothing more is recorded.
+    failed: bool,
+}
+
+impl ArenaJob {
+    fn new(recording: ArenaRecording, setup: kinolab_architectures::ArenaSetup) -> Self {
+        let e = &recording.arena.entrants[0];
+        let start = e.sim.pose;
+        Self {
+            setup,
+            scene: Scene::World(Box::new(e.sim.world.clone())),
+            path: vec![[start.x, start.y]],
+            ticks: Vec::new(),
+            failed: false,
+            recording,
         }
     }
-    (scene, path, ticks)
+
+    fn advance(&mut self, steps: usize) -> bool {
+        for _ in 0..steps {
+            if !self.recording.step() {
+                return true;
+            }
+            if self.failed {
+                continue;
+            }
+            let e = &self.recording.arena.entrants[0];
+            let pose = e.sim.pose;
+            self.path.push([pose.x, pose.y]);
+            self.failed = e.controller.failed().is_some();
+            let Some(asked) = e.controller.asked() else {
+                continue;
+            };
+            if self
+                .ticks
+                .last()
+                .is_some_and(|last| last.t >= e.sim.time - 1e-9)
+            {
+                continue;
+            }
+            self.ticks.push(Tick {
+                t: e.sim.time,
+                pose: [pose.x, pose.y, pose.theta],
+                given: asked
+                    .given
+                    .iter()
+                    .map(|(k, v)| (format!("state.{k}"), v.clone()))
+                    .collect(),
+                returned: asked.returned.clone(),
+                output: asked.output.clone(),
+                rays: Vec::new(),
+                feet: Vec::new(),
+            });
+        }
+        false
+    }
 }

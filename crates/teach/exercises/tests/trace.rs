@@ -83,3 +83,29 @@ fn what_the_code_prints_and_plots_is_kept_with_its_tick() {
         );
     }
 }
+
+#[test]
+fn a_trace_recorded_in_pieces_is_the_trace_recorded_at_once() {
+    for id in ["sequencer-replan", "behaviour-explore"] {
+        let exercise = find(id).unwrap();
+        let source = solution(id);
+        let world = &(exercise.worlds)()[0];
+        let whole = exercise.trace(&source, world);
+        let mut tracing = exercise.tracing(&source, world);
+        let mut progress = vec![tracing.progress()];
+        while !tracing.advance(7) {
+            progress.push(tracing.progress());
+        }
+        assert!(progress.len() > 10, "{id}: a long run takes several pieces");
+        assert_eq!(progress[0], 0.0, "{id}");
+        assert!(
+            progress.windows(2).all(|w| w[0] <= w[1]),
+            "{id}: {progress:?}"
+        );
+        let pieces = tracing.finish();
+        assert_eq!(pieces.ticks, whole.ticks, "{id}");
+        assert_eq!(pieces.path, whole.path, "{id}");
+        assert_eq!(pieces.outcome, whole.outcome, "{id}");
+        assert_eq!(pieces.outcome, exercise.run(&source, world), "{id}");
+    }
+}

@@ -61,8 +61,26 @@ fn parse_body(file: &str, body: &str, first_line: usize) -> Result<Vec<Block>, L
         first_line,
         display_math: false,
     };
+    parser.check_characters()?;
     parser.check_nesting()?;
     parser.blocks()
+}
+
+/// What a control character in a lesson most likely was: a backslash
+/// escape that a program turned into the character (`\beta` written from
+/// a string where `\b` is a backspace).
+fn control_name(c: char) -> String {
+    let meant = match c {
+        '\u{7}' => " (was `\\a` meant?)",
+        '\u{8}' => " (was `\\b`, as in `\\beta`, meant?)",
+        '\u{b}' => " (was `\\v`, as in `\\varphi`, meant?)",
+        '\u{c}' => " (was `\\f`, as in `\\frac`, meant?)",
+        '\t' => " (was `\\t`, as in `\\tau` or `\\theta`, meant?)",
+        '\n' => " (was `\\n`, as in `\\nu`, meant?)",
+        '\r' => " (was `\\r`, as in `\\rho`, meant?)",
+        _ => "",
+    };
+    format!("U+{:04X}{meant}", u32::from(c))
 }
 
 /// The deepest nesting of quotes, lists and emphasis a lesson may use: far
@@ -110,6 +128,44 @@ impl<'src> BodyParser<'_, 'src> {
 
     fn error(&self, offset: usize, message: impl Into<String>) -> LessonError {
         LessonError::new(self.file, self.line_of(offset), message)
+    }
+
+    /// No control characters in the text (line breaks aside, and tabs
+    /// that indent a line), and none at all inside a formula.
+    fn check_characters(&self) -> Result<(), LessonError> {
+        let body = self.body;
+        let indents = |at: usize| {
+            let line = body[..at].rfind('\n').map_or(0, |i| i + 1);
+            body[line..at].chars().all(|c| c == ' ' || c == '\t')
+        };
+        let stray = |(at, c): &(usize, char)| match c {
+            '\n' | '\r' => false,
+            '\t' => !indents(*at),
+            c => c.is_control(),
+        };
+        if let Some((at, c)) = body.char_indices().find(stray) {
+            return Err(self.error(
+                at,
+                format!("a control character, {}, in the text", control_name(c)),
+            ));
+        }
+        for (event, range) in &self.events {
+            let (Event::InlineMath(src) | Event::DisplayMath(src)) = event else {
+                continue;
+            };
+            let inline = matches!(event, Event::InlineMath(_));
+            let bad = |c: char| c.is_control() && (inline || c == '\t');
+            if let Some(c) = src.chars().find(|&c| bad(c)) {
+                return Err(self.error(
+                    range.start,
+                    format!(
+                        "a control character, {}, in the formula `{src}`",
+                        control_name(c)
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     fn peek(&self) -> Option<&(Event<'src>, Range<usize>)> {

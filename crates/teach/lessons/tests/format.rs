@@ -386,3 +386,25 @@ fn malformed_sorting_quizzes_name_the_file_and_line() {
     let e = error(&quiz("bins: A | B\n- y => A\n"));
     assert!(e.contains("2 to 20 items"), "{e}");
 }
+
+#[test]
+fn control_characters_are_refused_where_an_escape_was_meant() {
+    // "sets $\nu = \beta v / L$" written from a string in which `\n` and
+    // `\b` became a line feed and a backspace.
+    let garbled = format!("{HEADER}Text first.\n\nThen it sets $\n u = \u{8}eta v / L$.\n");
+    let e = error(&garbled);
+    assert!(e.starts_with("bad.md:11:"), "{e}");
+    assert!(e.contains("U+0008") && e.contains("`\\beta`"), "{e}");
+    let tab = format!("{HEADER}The phase $\theta$ of a leg.\n");
+    let e = error(&tab);
+    assert!(e.starts_with("bad.md:8:"), "{e}");
+    assert!(e.contains("U+0009") && e.contains("`\\theta`"), "{e}");
+    let feed = format!("{HEADER}A speed ${{\n}}u$ now.\n");
+    assert!(
+        error(&feed).contains("U+000A"),
+        "a line feed inside an inline formula"
+    );
+    // Line breaks, tabs that indent, and a display formula over several
+    // lines are fine.
+    lesson("A line,\r\nand another.\n\n- a list\n\n\t- indented by a tab\n\n$$\na = b\n$$\n");
+}

@@ -111,10 +111,16 @@ impl Grid {
 
     /// The cell containing `p`, if it is inside the grid.
     pub fn cell_of(&self, p: Vec2) -> Option<Cell> {
-        let i = ((p.x - self.bounds.x_min) / self.cell).floor();
-        let j = ((p.y - self.bounds.y_min) / self.cell).floor();
-        let inside = i >= 0.0 && j >= 0.0 && (i as usize) < self.nx && (j as usize) < self.ny;
-        inside.then_some((i as usize, j as usize))
+        let x = (p.x - self.bounds.x_min) / self.cell;
+        let y = (p.y - self.bounds.y_min) / self.cell;
+        // From zero up, truncating is rounding down (and no call to
+        // `floor`, which is a library call on some targets: this runs
+        // for every sample of every ray).
+        if !(x >= 0.0 && y >= 0.0) {
+            return None;
+        }
+        let (i, j) = (x as usize, y as usize);
+        (i < self.nx && j < self.ny).then_some((i, j))
     }
 
     pub fn is_free(&self, (i, j): Cell) -> bool {

@@ -11,12 +11,13 @@ mod stepper;
 use std::rc::Rc;
 
 use egui::RichText;
+use kinolab_exercises::trace::Tracing;
 use kinolab_exercises::{Check, Exercise, World};
 use kinolab_script::ScriptError;
 use serde::{Deserialize, Serialize};
 
 use crate::link::{self, Moment};
-use crate::player::Player;
+use crate::player::{FRAME_BUDGET, Player, Speed};
 use crate::theme;
 use crate::widget::{LabWidget, Params, SavedRun};
 use stepper::Stepping;
@@ -25,6 +26,8 @@ use stepper::Stepping;
 const NAME: &str = "code";
 /// The learner's script as "Save run" writes it.
 const FILE: &str = "mine.rhai";
+/// Steps of a run recorded between looks at the clock.
+const STEPS_PER_LOOK: usize = 16;
 
 /// What the lesson sets and a link carries.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -50,10 +53,29 @@ struct Code {
     results: Option<Check>,
     submitted: bool,
     player: Option<Player<Stepping>>,
-    /// The stepper is still to be made for the world chosen, at this
-    /// moment: tracing a world can take a frame of its own, so a widget
-    /// made and then given a link traces once, when first drawn.
-    to_step: Option<Moment<()>>,
+    /// The stepper still to be made for the world chosen (see [`Pending`]).
+    to_step: Option<Pending>,
+}
+
+/// A stepper on its way. Recording a world's run can take longer than a
+/// frame (a minute of an arena is thousands of calls of the learner's
+/// code), so the run is recorded a piece per frame from the first frame
+/// drawn (a widget made and then given a link records nothing twice), and
+/// the stepper opens at `moment` once it is recorded.
+struct Pending {
+    moment: Moment<()>,
+    speed: Option<Speed>,
+    tracing: Option<Tracing>,
+}
+
+impl Pending {
+    fn at(moment: Moment<()>, speed: Option<Speed>) -> Self {
+        Self {
+            moment,
+            speed,
+            tracing: None,
+        }
+    }
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
@@ -86,7 +108,7 @@ impl Code {
             results: None,
             submitted: false,
             player: None,
-            to_step: Some(Moment::default()),
+            to_step: Some(Pending::at(Moment::default(), None)),
         };
         code.edited();
         Ok(code)
@@ -130,30 +152,61 @@ impl Code {
         self.step_through(0);
     }
 
-    /// Record world `i` with the current code and show it in the stepper.
-    /// Make the stepper if it is still to be made.
-    fn ensure(&mut self) {
-        if let Some(moment) = self.to_step.take() {
-            self.step_through(self.settings.world - 1);
-            if let Some(p) = &mut self.player {
-                p.replay(&moment.events, moment.instant);
-            }
-        }
-    }
-
-    fn step_through(&mut self, i: usize) {
-        self.to_step = None;
-        let Some(world) = self.worlds.get(i) else {
+    /// Record more of the stepper's run, for at most `budget` of wall
+    /// time; open the stepper once the run is recorded.
+    fn record(&mut self, budget: std::time::Duration) {
+        let Some(pending) = &mut self.to_step else {
             return;
         };
-        self.settings.world = i + 1;
-        let speed = self.player.as_ref().map(|p| p.speed);
-        let trace = self.exercise.trace(&self.source, world);
-        let mut player = Player::new(Stepping::new(Rc::new(trace)));
+        let started = web_time::Instant::now();
+        let world = &self.worlds[self.settings.world - 1];
+        let tracing = pending
+            .tracing
+            .get_or_insert_with(|| self.exercise.tracing(&self.source, world));
+        while !tracing.advance(STEPS_PER_LOOK) {
+            if started.elapsed() > budget {
+                return;
+            }
+        }
+        let Some(Pending {
+            moment,
+            speed,
+            tracing: Some(tracing),
+        }) = self.to_step.take()
+        else {
+            return;
+        };
+        let mut player = Player::new(Stepping::new(Rc::new(tracing.finish())));
         if let Some(speed) = speed {
             player.speed = speed;
         }
+        player.replay(&moment.events, moment.instant);
         self.player = Some(player);
+    }
+
+    /// Record world `i` with the current code and show it in the stepper
+    /// (from the next frames on, see [`Pending`]).
+    fn step_through(&mut self, i: usize) {
+        if i >= self.worlds.len() {
+            return;
+        }
+        self.settings.world = i + 1;
+        let speed = self.player.take().map(|p| p.speed);
+        self.to_step = Some(Pending::at(Moment::default(), speed));
+    }
+
+    /// The stepper while its run is still being recorded.
+    fn recording_ui(&self, ui: &mut egui::Ui) {
+        let Some(pending) = &self.to_step else {
+            return;
+        };
+        let done = pending.tracing.as_ref().map_or(0.0, Tracing::progress);
+        ui.horizontal(|ui| {
+            ui.spinner();
+            ui.label(format!("Recording the run: {:.0} %", done * 100.0));
+            ui.add(egui::ProgressBar::new(done as f32).desired_width(240.0));
+        });
+        crate::widget::animate(ui);
     }
 
     fn header(&self, ui: &mut egui::Ui) {
@@ -273,7 +326,7 @@ impl Code {
 
 impl LabWidget for Code {
     fn ui(&mut self, ui: &mut egui::Ui) {
-        self.ensure();
+        self.record(FRAME_BUDGET);
         self.header(ui);
         ui.add_space(4.0);
         if editor::editor(ui, &mut self.source, self.syntax.as_ref()) {
@@ -288,12 +341,13 @@ impl LabWidget for Code {
         if let Some(player) = &mut self.player {
             stepper::show(ui, player);
         }
+        self.recording_ui(ui);
         self.exports(ui);
     }
 
     fn state(&self) -> Option<String> {
         let moment = match (&self.player, &self.to_step) {
-            (_, Some(pending)) => pending.clone(),
+            (_, Some(pending)) => pending.moment.clone(),
             (Some(player), None) => player.moment(),
             (None, None) => Moment::default(),
         };
@@ -304,13 +358,13 @@ impl LabWidget for Code {
         let (settings, moment): (Settings, Moment<()>) = link::read(NAME, state)?;
         let mut restored = Code::new(settings)?;
         restored.initial = self.initial.clone();
-        restored.to_step = Some(moment);
+        restored.to_step = Some(Pending::at(moment, None));
         *self = restored;
         Ok(())
     }
 
     fn seek(&mut self, t: f64) {
-        self.ensure();
+        self.record(std::time::Duration::MAX);
         if let Some(p) = &mut self.player {
             p.seek_time(t);
         }
@@ -335,5 +389,52 @@ impl LabWidget for Code {
             ],
             shows,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    #[test]
+    fn a_long_run_is_recorded_over_frames_and_opens_at_the_links_instant() {
+        let mut code = Code::new(Settings {
+            exercise: "sequencer-replan".into(),
+            code: None,
+            world: 2,
+            hints: 0,
+        })
+        .unwrap();
+        let moment = Moment {
+            instant: 12.0,
+            events: Vec::new(),
+        };
+        code.to_step = Some(Pending::at(moment.clone(), Some(Speed::Four)));
+        let mut frames = 0;
+        let mut progress = 0.0;
+        while code.player.is_none() {
+            // The least a frame does: a few steps of the run.
+            code.record(std::time::Duration::ZERO);
+            frames += 1;
+            assert!(frames < 100_000, "the recording never ends");
+            if let Some(Pending {
+                tracing: Some(t), ..
+            }) = &code.to_step
+            {
+                assert!(t.progress() >= progress);
+                progress = t.progress();
+            }
+            assert!(
+                code.state().is_some(),
+                "the link keeps its instant meanwhile"
+            );
+        }
+        assert!(frames > 20, "a minute of an arena took {frames} frames");
+        let at_once = code.exercise.trace(&code.source, &code.worlds[1]);
+        let player = code.player.as_mut().unwrap();
+        assert_eq!(player.speed, Speed::Four);
+        assert!((player.time() - 12.0).abs() < 0.1, "{}", player.time());
+        assert_eq!(player.state().trace().ticks, at_once.ticks);
     }
 }

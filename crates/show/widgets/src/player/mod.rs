@@ -26,6 +26,10 @@ pub const MAX_CHECKPOINTS: usize = 64;
 /// The most ticks the player records (an hour at 20 ticks a second, or
 /// ten minutes at 300); the run pauses there.
 pub const MAX_TICKS: usize = 72_000;
+/// Ticks a replay runs between looks at the clock (a tick of the
+/// architecture arena, four robots sensing and planning, can take a
+/// millisecond).
+const TICKS_PER_LOOK: usize = 4;
 /// Ticks between copies while a run is short.
 const FIRST_SPACING: usize = 16;
 
@@ -109,11 +113,12 @@ struct Catching<E> {
     instant: f64,
 }
 
-/// The most wall-clock time a replay runs in one frame: a link to an
-/// hour into a run must not freeze the page, so the rest runs over the
-/// next frames. (Debug builds, which only tests run, are ten times slower
-/// and get the whole replay at once, so a test sees the instant at once.)
-const CATCH_UP_BUDGET: std::time::Duration = if cfg!(debug_assertions) {
+/// The most wall-clock time long work (a link's replay, a run recorded
+/// for a stepper) takes in one frame: a link to an hour into a run must
+/// not freeze the page, so the rest runs over the next frames. (Debug
+/// builds, which only tests run, are ten times slower and do the whole of
+/// it at once, so a test sees the result at once.)
+pub const FRAME_BUDGET: std::time::Duration = if cfg!(debug_assertions) {
     std::time::Duration::from_secs(30)
 } else {
     std::time::Duration::from_millis(8)
@@ -328,7 +333,7 @@ impl<S: Simulation> Player<S> {
     /// next frames ([`Player::catching_up`]).
     pub fn replay(&mut self, events: &[(f64, S::Event)], instant: f64) {
         self.start_replay(events, instant);
-        self.catch_up(CATCH_UP_BUDGET);
+        self.catch_up(FRAME_BUDGET);
     }
 
     fn start_replay(&mut self, events: &[(f64, S::Event)], instant: f64) {
@@ -350,7 +355,7 @@ impl<S: Simulation> Player<S> {
         let started = web_time::Instant::now();
         while let Some(mut c) = self.catching.take() {
             let target = c.events.front().map_or(c.instant, |(t, _)| *t);
-            if self.run_toward(target, 64) {
+            if self.run_toward(target, TICKS_PER_LOOK) {
                 match c.events.pop_front() {
                     Some((t, event)) => {
                         self.seek_time(t);
@@ -384,7 +389,7 @@ impl<S: Simulation> Player<S> {
     /// [`Player::speed`]), at most `most` ticks; whether anything moved.
     pub fn advance(&mut self, seconds: f64, most: usize) -> bool {
         if self.catching.is_some() {
-            self.catch_up(CATCH_UP_BUDGET);
+            self.catch_up(FRAME_BUDGET);
             return true;
         }
         if !self.playing {

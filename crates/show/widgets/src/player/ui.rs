@@ -43,11 +43,9 @@ impl<S: Simulation> Player<S> {
                 self.step_back();
             }
             let label = if self.playing { "Pause" } else { "Play" };
-            if ui
-                .button(label)
-                .on_hover_text("Play or pause (Space)")
-                .clicked()
-            {
+            let play = ui.button(label).on_hover_text("Play or pause (Space)");
+            crate::probe::publish(ui.ctx(), "player.play", play.rect.center());
+            if play.clicked() {
                 self.toggle();
             }
             if ui.button("Step").on_hover_text("One tick on (→)").clicked() {
@@ -55,8 +53,12 @@ impl<S: Simulation> Player<S> {
                 self.step_forward();
             }
             for speed in Speed::ALL {
-                crate::widget::choose(ui, &mut self.speed, speed, speed.label())
+                let chosen = crate::widget::choose(ui, &mut self.speed, speed, speed.label())
                     .on_hover_text("Playing speed against the clock");
+                if crate::probe::enabled(ui.ctx()) {
+                    let name = format!("player.speed {}", speed.label());
+                    crate::probe::publish(ui.ctx(), &name, chosen.rect.center());
+                }
             }
             ui.label(self.time_label());
         });
