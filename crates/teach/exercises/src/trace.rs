@@ -103,7 +103,8 @@ impl Exercise {
         }
     }
 
-    fn at_once(&self, source: &str, world: &World, (scene, path, ticks): Recorded) -> Job {
+    fn at_once(&self, source: &str, world: &World, (scene, path, mut ticks): Recorded) -> Job {
+        thin(&mut ticks);
         Job::Done(Box::new(Trace {
             scene,
             path,

@@ -66,4 +66,30 @@ mod tests {
             assert_eq!(*text, on_disk, "{path}");
         }
     }
+
+    /// A lesson speaks to a learner who has only the lab: never of the
+    /// sheets, notes or source documents its authors worked from.
+    #[test]
+    fn no_lesson_speaks_of_documents_the_learner_cannot_see() {
+        const UNSEEN: [&str; 8] = [
+            "reference sheet",
+            "the sheet",
+            "the notes",
+            "lecture notes",
+            "course notes",
+            "seed document",
+            "source document",
+            "the handout",
+        ];
+        let mut found = Vec::new();
+        for (path, text) in markdown_files() {
+            let lower = text.to_lowercase();
+            for (n, line) in lower.lines().enumerate() {
+                for phrase in UNSEEN.iter().filter(|p| line.contains(**p)) {
+                    found.push(format!("{path}:{}: \"{phrase}\"", n + 1));
+                }
+            }
+        }
+        assert!(found.is_empty(), "{}", found.join("\n"));
+    }
 }
