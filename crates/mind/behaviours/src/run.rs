@@ -521,7 +521,7 @@ impl Recording {
         };
         Ok(Self {
             runner,
-            output_every: setup.output_every.max(1),
+            output_every: setup.output_every,
             steps: 0,
             report,
         })

@@ -72,24 +72,14 @@ impl Exercise {
                 let setup = behaviours::setup(self.hook, source, t);
                 match Recording::new(&setup) {
                     Ok(recording) => Job::Behaviours(Box::new(BehavioursJob::new(recording, t))),
-                    Err(e) => Job::Done(Box::new(Trace {
-                        scene: Scene::World(Box::new(t.world.clone())),
-                        path: Vec::new(),
-                        ticks: Vec::new(),
-                        outcome: behaviours::judge(world, t, Err(e)),
-                    })),
+                    Err(e) => unstarted(&t.world, behaviours::judge(world, t, Err(e))),
                 }
             }
             Trial::Arena(t) => {
                 let setup = architecture::setup(source, t);
                 match ArenaRecording::new(&setup, Architecture::Hybrid, architecture::EVERY) {
                     Ok(recording) => Job::Arena(Box::new(ArenaJob::new(recording, setup))),
-                    Err(e) => Job::Done(Box::new(Trace {
-                        scene: Scene::World(Box::new(t.setup.world.clone())),
-                        path: Vec::new(),
-                        ticks: Vec::new(),
-                        outcome: architecture::judge(world, &setup, Err(e)),
-                    })),
+                    Err(e) => unstarted(&t.setup.world, architecture::judge(world, &setup, Err(e))),
                 }
             }
             // Short runs: recorded at once.
@@ -112,6 +102,16 @@ impl Exercise {
             outcome: self.run(source, world),
         }))
     }
+}
+
+/// A run that could not start: its world, and the outcome saying why.
+fn unstarted(place: &Place, outcome: Outcome) -> Job {
+    Job::Done(Box::new(Trace {
+        scene: Scene::World(Box::new(place.clone())),
+        path: Vec::new(),
+        ticks: Vec::new(),
+        outcome,
+    }))
 }
 
 /// Steps [`Exercise::trace`] runs between looks at whether the run is over.
@@ -150,7 +150,7 @@ impl Tracing {
     pub fn progress(&self) -> f64 {
         let (now, end) = match &self.job {
             Job::Done(_) => return 1.0,
-            Job::Behaviours(job) => (job.recording.runner.sim.time, job.duration),
+            Job::Behaviours(job) => (job.recording.runner.sim.time, job.trial.duration),
             Job::Arena(job) => (job.recording.arena.entrants[0].sim.time, job.setup.duration),
         };
         if end > 0.0 {
@@ -265,7 +265,6 @@ fn control(source: &str, t: &crate::control::Trial) -> Recorded {
 struct BehavioursJob {
     recording: Recording,
     trial: behaviours::Trial,
-    duration: f64,
     scene: Scene,
     path: Vec<[f64; 2]>,
     ticks: Vec<Tick>,
@@ -277,7 +276,6 @@ impl BehavioursJob {
         Self {
             recording,
             trial: t.clone(),
-            duration: t.duration,
             scene: Scene::World(Box::new(t.world.clone())),
             path: vec![[start.x, start.y]],
             ticks: Vec::new(),
