@@ -4,9 +4,9 @@
 use std::collections::HashMap;
 
 use egui::{Color32, RichText, Stroke};
-use kinolab_lessons::{Align, Block, Inline, Quiz, Span, WidgetSpec, math::Math};
+use kinolab_lessons::{Align, Block, Inline, Quiz, Span, WidgetSpec};
 
-use kinolab_formula::layout::{MathStyle, display_math, inline_size, math_widget};
+use kinolab_formula::layout::{InlineMath, MathStyle, display_math};
 use kinolab_widgets::theme;
 use kinolab_widgets::widget::{LabWidget, error_box, sideways};
 
@@ -212,7 +212,12 @@ pub fn inline_ui(
         ui.spacing_mut().item_spacing.x = 0.0;
         ui.spacing_mut().item_spacing.y = 2.0;
         for (i, span) in spans.iter().enumerate() {
-            keep_with_punctuation(ui, span, spans.get(i + 1), size);
+            // A formula is laid out once, to measure it and to show it.
+            let math = match span {
+                Span::Math(math) => Some(InlineMath::new(ui, math, &math_style(ui, size))),
+                _ => None,
+            };
+            keep_with_punctuation(ui, span, math.as_ref(), spans.get(i + 1), size);
             match span {
                 Span::Text { text, style } => {
                     let mut rich = RichText::new(text).size(size);
@@ -245,8 +250,16 @@ pub fn inline_ui(
                 Span::Code(code) => {
                     ui.label(RichText::new(code).code().size(theme::CODE_SIZE));
                 }
-                Span::Math(math) => {
-                    inline_math(ui, math, size, strong);
+                Span::Math(_) => {
+                    if let Some(math) = &math {
+                        let visuals = ui.visuals();
+                        let color = if strong {
+                            visuals.strong_text_color()
+                        } else {
+                            visuals.text_color()
+                        };
+                        math.show(ui, color);
+                    }
                 }
                 Span::Image { .. } => {}
                 Span::LineBreak => ui.end_row(),
@@ -259,7 +272,13 @@ pub fn inline_ui(
 /// glued to its end (a comma, a full stop, "s") would not fit after it on
 /// this row: the two then wrap together, and punctuation never begins a
 /// line alone.
-fn keep_with_punctuation(ui: &mut egui::Ui, span: &Span, next: Option<&Span>, size: f32) {
+fn keep_with_punctuation(
+    ui: &mut egui::Ui,
+    span: &Span,
+    math: Option<&InlineMath>,
+    next: Option<&Span>,
+    size: f32,
+) {
     let Some(Span::Text { text, style }) = next else {
         return;
     };
@@ -276,7 +295,7 @@ fn keep_with_punctuation(ui: &mut egui::Ui, span: &Span, next: Option<&Span>, si
     };
     let atom = match span {
         Span::Code(code) => width(code, egui::FontId::monospace(theme::CODE_SIZE)),
-        Span::Math(math) => inline_size(ui, math, &math_style(ui, size)).x,
+        Span::Math(_) => math.map_or(0.0, |m| m.size().x),
         Span::Text { text, style } if style.link.is_some() => {
             width(text, egui::FontId::proportional(size))
         }
@@ -308,15 +327,6 @@ fn italic_correction(ui: &mut egui::Ui, next: Option<&Span>, size: f32) {
     }
 }
 
-/// A formula in running text, in the same colour as the words around it.
-fn inline_math(ui: &mut egui::Ui, math: &Math, size: f32, strong: bool) {
-    let mut style = math_style(ui, size);
-    if strong {
-        style.color = ui.visuals().strong_text_color();
-    }
-    math_widget(ui, math, &style);
-}
-
 fn table_ui(
     ui: &mut egui::Ui,
     align: &[Align],
@@ -341,29 +351,22 @@ fn table_ui(
             .clamp(6, 40) as f32
     };
     let weights: Vec<f32> = (0..columns).map(weight).collect();
-    // No column is narrower than its longest word, so words never break.
-    let font = egui::FontId::proportional(theme::BODY_SIZE - 1.0);
+    // No column is narrower than its widest word, formula or piece of
+    // code, so nothing breaks or runs past its column.
+    let size = theme::BODY_SIZE - 1.0;
     let longest_word = |col: usize| {
         std::iter::once(header.get(col))
             .chain(rows.iter().map(|r| r.get(col)))
             .flatten()
-            .flat_map(|cell| {
-                let text = kinolab_lessons::plain_text(cell);
-                text.split_whitespace()
-                    .map(|w| {
-                        ui.painter()
-                            .layout_no_wrap(w.to_owned(), font.clone(), Color32::WHITE)
-                            .size()
-                            .x
-                    })
-                    .collect::<Vec<f32>>()
-            })
+            .map(|cell| widest_atom(ui, cell, size))
             .fold(0.0f32, f32::max)
     };
     // Bold headers are a little wider than the measure.
     let least: Vec<f32> = (0..columns).map(|c| longest_word(c) * 1.08 + 4.0).collect();
     let gap = 16.0;
-    let usable = ui.available_width() - 14.0 - gap * (columns as f32 - 1.0);
+    // The frame's margins and stroke, and a point for egui's rounding of
+    // each cell to whole pixels.
+    let usable = ui.available_width() - 15.0 - gap * (columns as f32 - 1.0);
     let widths = column_widths(&weights, &least, usable);
     // A table that cannot fit even at its narrowest scrolls sideways.
     sideways(ui, |ui| {
@@ -374,6 +377,29 @@ fn table_ui(
 /// Share `usable` points among columns in proportion to `weights`, none
 /// narrower than its `least`; when even the least widths do not fit, the
 /// columns get exactly those (and the table scrolls).
+/// The widest piece of `cell` that cannot wrap: a word, a word of code or
+/// a whole formula, at text size `size`.
+fn widest_atom(ui: &egui::Ui, cell: &Inline, size: f32) -> f32 {
+    let words = |text: &str, font: egui::FontId| {
+        text.split_whitespace()
+            .map(|w| {
+                ui.painter()
+                    .layout_no_wrap(w.to_owned(), font.clone(), Color32::WHITE)
+                    .size()
+                    .x
+            })
+            .fold(0.0f32, f32::max)
+    };
+    cell.iter()
+        .map(|span| match span {
+            Span::Text { text, .. } => words(text, egui::FontId::proportional(size)),
+            Span::Code(code) => words(code, egui::FontId::monospace(theme::CODE_SIZE)),
+            Span::Math(math) => InlineMath::new(ui, math, &math_style(ui, size)).size().x,
+            Span::Image { .. } | Span::LineBreak => 0.0,
+        })
+        .fold(0.0f32, f32::max)
+}
+
 pub fn column_widths(weights: &[f32], least: &[f32], usable: f32) -> Vec<f32> {
     let mut widths: Vec<f32> = least.to_vec();
     let mut free: Vec<usize> = (0..weights.len()).collect();

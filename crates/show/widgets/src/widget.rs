@@ -198,12 +198,7 @@ pub fn message_ui(ui: &mut egui::Ui, text: &str, color: egui::Color32) -> egui::
 /// A feedback as one sentence or more: "Solved. " before a met goal's
 /// message, the message's first letter a capital.
 pub fn feedback_text(f: &Feedback) -> String {
-    let message = f.message.trim();
-    let mut chars = message.chars();
-    let sentence = match chars.next() {
-        Some(first) => first.to_uppercase().chain(chars).collect(),
-        None => String::new(),
-    };
+    let sentence = sentence(f.message.trim());
     if f.met {
         format!("Solved. {sentence}")
     } else {
@@ -211,10 +206,19 @@ pub fn feedback_text(f: &Feedback) -> String {
     }
 }
 
+/// `text` as the start of a sentence: its first letter a capital (the core
+/// writes its reasons in lower case, to be quoted mid-sentence too).
+pub fn sentence(text: &str) -> String {
+    let mut chars = text.chars();
+    match chars.next() {
+        Some(first) => first.to_uppercase().chain(chars).collect(),
+        None => String::new(),
+    }
+}
+
 /// Narrower than this, points, a widget stacks what it shows side by side.
 pub const NARROW: f32 = 560.0;
 
-/// Whether `ui` is too narrow for a widget's panels side by side.
 /// One option of a choice, framed even when not chosen so that every
 /// option reads as a button; the chosen one is highlighted.
 pub fn choice(
@@ -240,6 +244,7 @@ pub fn choose<T: PartialEq>(
     response
 }
 
+/// Whether `ui` is too narrow for a widget's panels side by side.
 pub fn narrow(ui: &egui::Ui) -> bool {
     ui.available_width() < NARROW
 }
@@ -326,6 +331,13 @@ pub fn sideways<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -> R
     let hidden_left = out.state.clamped_offset().x > 0.5;
     let hidden_right =
         out.content_size.x - out.state.clamped_offset().x > out.inner_rect.width() + 0.5;
+    if hidden_left || hidden_right {
+        let over = out.content_size.x - out.inner_rect.width();
+        ui.ctx().data_mut(|d| {
+            d.get_temp_mut_or_default::<Vec<f32>>(overflow_id())
+                .push(over)
+        });
+    }
     let panel = ui.visuals().panel_fill;
     if hidden_left {
         edge_fade(ui.painter(), out.inner_rect, egui::Align::Min, panel);
@@ -342,6 +354,18 @@ pub fn sideways<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -> R
         ui.scroll_with_delta_animation(egui::vec2(0.0, dy), egui::style::ScrollAnimation::none());
     }
     out.inner
+}
+
+fn overflow_id() -> egui::Id {
+    egui::Id::unique("kinolab-sideways-overflow")
+}
+
+/// By how many points each [`sideways`] area drawn since the last call was
+/// wider than its column (it scrolled): a page that should fit can check
+/// that nothing had to scroll.
+pub fn take_scrolled_sideways(ctx: &egui::Context) -> Vec<f32> {
+    ctx.data_mut(|d| d.remove_temp::<Vec<f32>>(overflow_id()))
+        .unwrap_or_default()
 }
 
 /// A band at one side of `rect` fading from clear to `color`: the sign

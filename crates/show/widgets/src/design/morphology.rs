@@ -162,9 +162,19 @@ impl Morphology {
             }
         }
         let chosen = [self.settings.from, self.settings.to(model)];
+        // Names clear of the dots, the pairs' lines and the ports' squares.
         let mut labels = Labels::default();
         for b in 0..n {
             labels.reserve(egui::Rect::from_center_size(at(b), vec2(10.0, 10.0)));
+        }
+        for joint in model.joints() {
+            labels.avoid_line(at(joint.parent), at(joint.child));
+        }
+        for f in model.frames() {
+            labels.reserve(egui::Rect::from_center_size(
+                at(f.body) + vec2(0.0, 9.0),
+                vec2(6.0, 6.0),
+            ));
         }
         for b in 0..n {
             let color = if chosen.contains(&b) {
@@ -177,7 +187,7 @@ impl Morphology {
             painter.circle_filled(at(b), 5.0, color);
             if n <= 14 || chosen.contains(&b) {
                 let name = model.bodies()[b].name.as_str();
-                labels.add(at(b), name, ink).toward(vec2(1.0, 0.0));
+                labels.add(at(b), name, ink).toward(vec2(0.0, -1.0));
             }
         }
         labels.draw(&painter, &FontId::proportional(theme::SMALL_SIZE));

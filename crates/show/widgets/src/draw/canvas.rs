@@ -2,7 +2,7 @@
 //! colour (with a ground grid for a 3D view), and a line of text at its
 //! top-left corner.
 
-use egui::{Color32, FontId, Painter, Rect, Response, Sense, Vec2, vec2};
+use egui::{Align2, Color32, FontId, Painter, Pos2, Rect, Response, Sense, Vec2, vec2};
 
 use super::scene3d::{Camera, draw_grid};
 use crate::theme;
@@ -36,14 +36,24 @@ pub fn canvas_3d(
 /// for the first): a canvas's title, read-out or verdict.
 pub fn corner_text(painter: &Painter, rect: Rect, line: usize, text: String, color: Color32) {
     let at = rect.left_top() + vec2(8.0, 6.0 + 18.0 * line as f32);
-    let galley = painter.layout_no_wrap(text, FontId::proportional(theme::TITLE_SIZE), color);
-    // On the canvas's own colour, so arrows and shading under the text
-    // cannot make it unreadable.
+    let font = FontId::proportional(theme::TITLE_SIZE);
+    text_on_canvas(painter, at, Align2::LEFT_TOP, text, font, color);
+}
+
+/// Text on a patch of the canvas's own colour, so the lines, arrows and
+/// shading under it cannot make it unreadable; where it went.
+pub fn text_on_canvas(
+    painter: &Painter,
+    at: Pos2,
+    align: Align2,
+    text: String,
+    font: FontId,
+    color: Color32,
+) -> Rect {
+    let galley = painter.layout_no_wrap(text, font, color);
+    let rect = align.anchor_size(at, galley.size());
     let backdrop = painter.ctx().global_style().visuals.extreme_bg_color;
-    painter.rect_filled(
-        Rect::from_min_size(at, galley.size()).expand(2.0),
-        3.0,
-        backdrop.gamma_multiply(0.9),
-    );
-    painter.galley(at, galley, color);
+    painter.rect_filled(rect.expand(2.0), 3.0, backdrop.gamma_multiply(0.9));
+    painter.galley(rect.min, galley, color);
+    rect
 }

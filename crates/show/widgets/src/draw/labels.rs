@@ -74,11 +74,14 @@ const SPOTS: [(Vec2, Align2); 8] = [
 pub struct Obstacles<'a> {
     pub rects: &'a [Rect],
     pub lines: &'a [[Pos2; 2]],
+    /// The area a label must stay inside (a canvas), if any.
+    pub bounds: Option<Rect>,
 }
 
 impl Obstacles<'_> {
     fn hit(&self, r: Rect) -> bool {
-        self.rects.iter().any(|t| t.intersects(r))
+        self.bounds.is_some_and(|b| !b.contains_rect(r))
+            || self.rects.iter().any(|t| t.intersects(r))
             || self.lines.iter().any(|&[a, b]| segment_hits(r, a, b))
     }
 }
@@ -196,9 +199,12 @@ impl Labels {
         let mut placed = Vec::with_capacity(self.pending.len());
         for p in std::mem::take(&mut self.pending) {
             let laid = lay_out(painter, p.text, font, p.color);
+            // Inside the canvas the painter is clipped to: a label half
+            // outside it would be cut off.
             let obstacles = Obstacles {
                 rects: &self.taken,
                 lines: &self.lines,
+                bounds: Some(painter.clip_rect()),
             };
             let pref = Preference {
                 toward: p.toward,
@@ -307,6 +313,7 @@ mod tests {
             let o = Obstacles {
                 rects: &taken,
                 lines: &[],
+                bounds: None,
             };
             let r = place(o, anchor, LABEL, Preference::default());
             assert!(free(o, r), "{r:?} overlaps {taken:?}");
@@ -317,6 +324,7 @@ mod tests {
             let o = Obstacles {
                 rects: &taken,
                 lines: &[],
+                bounds: None,
             };
             let r = place(o, anchor, LABEL, Preference::default());
             assert!(free(o, r), "{r:?} overlaps {taken:?}");
@@ -338,6 +346,7 @@ mod tests {
         let obstacles = Obstacles {
             rects: &[],
             lines: &lines,
+            bounds: None,
         };
         let r = place(obstacles, o, LABEL, Preference::default());
         for [a, b] in lines {
@@ -374,6 +383,7 @@ mod tests {
         let obstacles = Obstacles {
             rects: &foot,
             lines: &[],
+            bounds: None,
         };
         let pref = Preference {
             toward: vec2(0.0, 1.0),
@@ -382,6 +392,28 @@ mod tests {
         let clear = place(obstacles, o, LABEL, pref);
         assert!(!obstacles.hit(clear), "{clear:?}");
         assert!(clear.center().y > 0.0, "it went below, as asked");
+    }
+
+    #[test]
+    fn a_label_at_the_edge_of_its_canvas_turns_inward() {
+        // A dot 10 points from the canvas's right edge, its name wanted to
+        // the right: it goes to the left rather than be cut off.
+        let canvas = Rect::from_min_max(Pos2::new(0.0, 0.0), Pos2::new(200.0, 100.0));
+        let dot = Pos2::new(190.0, 50.0);
+        let obstacles = Obstacles {
+            bounds: Some(canvas),
+            ..Obstacles::default()
+        };
+        let pref = Preference {
+            toward: vec2(1.0, 0.0),
+            clearance: 0.0,
+        };
+        let r = place(obstacles, dot, LABEL, pref);
+        assert!(canvas.contains_rect(r), "{r:?}");
+        assert!(r.center().x < dot.x, "{r:?}");
+        // Without the canvas it would have gone right, past the edge.
+        let unbounded = place(Obstacles::default(), dot, LABEL, pref);
+        assert!(!canvas.contains_rect(unbounded), "{unbounded:?}");
     }
 
     #[test]

@@ -14,7 +14,7 @@ pub mod plot;
 pub mod scene3d;
 mod view;
 
-pub use canvas::{canvas, canvas_3d, corner_text};
+pub use canvas::{canvas, canvas_3d, corner_text, text_on_canvas};
 pub use grid::{axes, grid, nice_step};
 pub use handle::{Handle, handle};
 pub use view::{PlaneView, local, placed, placed_dir};

@@ -205,8 +205,11 @@ impl ZmpCartTable {
             theme::accent(ui)
         };
         painter.circle(body, 14.0, color, Stroke::new(1.5, ink));
-        // Marks on the ground, their names below it, clear of each other.
+        // Marks on the ground, their names below it, clear of each other,
+        // of the ground line and of the foot.
         let mut labels = Labels::default();
+        labels.avoid_line(ground[0], ground[1]);
+        labels.reserve(foot);
         let mut mark = |at: f64, color: Color32, text: &str| {
             let p = view.to_screen([at, 0.0]);
             painter.circle_filled(p, 5.0, color);

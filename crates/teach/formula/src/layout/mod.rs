@@ -22,7 +22,7 @@ mod ui;
 mod tests;
 
 use typeset::Typesetter;
-pub use ui::{display_math, inline_size, math_widget};
+pub use ui::{InlineMath, display_math, math_widget};
 
 use std::sync::Arc;
 

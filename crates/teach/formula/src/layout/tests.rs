@@ -295,7 +295,7 @@ fn baseline_matches_labels_in_a_sized_row() {
     let mut rects = Vec::new();
     let output = ctx.run_ui(egui::RawInput::default(), |ui| {
         ui.horizontal_wrapped(|ui| {
-            ui.set_row_height(inline_size(ui, &math, &STYLE).y);
+            ui.set_row_height(InlineMath::new(ui, &math, &STYLE).size().y);
             rects.push(ui.label(egui::RichText::new("x").size(STYLE.size)).rect);
             rects.push(math_widget(ui, &math, &STYLE).rect);
             rects.push(ui.label(egui::RichText::new("y").size(STYLE.size)).rect);

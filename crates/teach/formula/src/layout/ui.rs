@@ -14,21 +14,39 @@ use super::*;
 /// up with that of neighbouring labels. Tall formulas grow symmetrically;
 /// egui does not move widgets already placed in the row, so labels before a
 /// tall formula only stay aligned if the row is made tall enough up front
-/// with `ui.set_row_height` (see [`inline_size`]).
+/// with `ui.set_row_height` (see [`InlineMath::size`]).
 pub fn math_widget(ui: &mut Ui, math: &Math, style: &MathStyle) -> Response {
-    let (layout, placement) = layout_inline(ui, math, style);
-    let (rect, response) = ui.allocate_exact_size(placement.size, Sense::hover());
-    if ui.is_rect_visible(rect) {
-        let origin = rect.left_top() + vec2(0.0, placement.baseline);
-        layout.paint(ui.painter(), origin, style.color);
-    }
-    response
+    InlineMath::new(ui, math, style).show(ui, style.color)
 }
 
-/// The size [`math_widget`] will allocate for `math`, for callers that want
-/// to size a row of text before filling it.
-pub fn inline_size(ui: &Ui, math: &Math, style: &MathStyle) -> Vec2 {
-    layout_inline(ui, math, style).1.size
+/// An inline formula laid out once: measure it (to decide where a row of
+/// text wraps), then show it, without laying it out twice.
+#[derive(Debug, Clone)]
+pub struct InlineMath {
+    layout: MathBox,
+    placement: InlinePlacement,
+}
+
+impl InlineMath {
+    pub fn new(ui: &Ui, math: &Math, style: &MathStyle) -> Self {
+        let (layout, placement) = layout_inline(ui, math, style);
+        Self { layout, placement }
+    }
+
+    /// The size [`InlineMath::show`] will allocate.
+    pub fn size(&self) -> Vec2 {
+        self.placement.size
+    }
+
+    /// Allocates the formula's box in `ui` and paints it in `color`.
+    pub fn show(&self, ui: &mut Ui, color: egui::Color32) -> Response {
+        let (rect, response) = ui.allocate_exact_size(self.placement.size, Sense::hover());
+        if ui.is_rect_visible(rect) {
+            let origin = rect.left_top() + vec2(0.0, self.placement.baseline);
+            self.layout.paint(ui.painter(), origin, color);
+        }
+        response
+    }
 }
 
 pub(super) fn layout_inline(ui: &Ui, math: &Math, style: &MathStyle) -> (MathBox, InlinePlacement) {

@@ -79,8 +79,8 @@ fn port_anchor(r: Rect, services: usize, j: usize) -> Pos2 {
     )
 }
 
-/// A point along the wire from `a` (a service) to `b` (a port).
-fn along(a: Pos2, b: Pos2, t: f32) -> Pos2 {
+/// A point on the S-curve from `a` (a service) to `b` (a port).
+fn curve_point(a: Pos2, b: Pos2, t: f32) -> Pos2 {
     let d = ((b.x - a.x).abs() / 2.0).max(40.0);
     let (p1, p2) = (a + vec2(d, 0.0), b - vec2(d, 0.0));
     let u = 1.0 - t;
@@ -91,11 +91,56 @@ fn along(a: Pos2, b: Pos2, t: f32) -> Pos2 {
     )
 }
 
+/// The path of a wire from `a` (a service) to `b` (a port): an S-curve
+/// where it clears every box, otherwise a detour along the gaps between
+/// columns and the margin above or below the boxes, so that no wire hides
+/// under a box or crosses its names. `lane` spreads detours that share a
+/// gap a few points apart.
+fn wire_path(a: Pos2, b: Pos2, boxes: &[Rect], lane: usize) -> Vec<Pos2> {
+    let curve: Vec<Pos2> = (0..=24)
+        .map(|k| curve_point(a, b, k as f32 / 24.0))
+        .collect();
+    let blocked = |p: &Pos2| boxes.iter().any(|r| r.shrink(1.0).contains(*p));
+    if !curve.iter().any(blocked) {
+        return curve;
+    }
+    let off = 4.0 + 3.0 * (lane % 3) as f32;
+    let (x1, x2) = (a.x + off, b.x - off);
+    let spanned = boxes
+        .iter()
+        .filter(|r| r.right() >= x1.min(x2) && r.left() <= x1.max(x2));
+    let above = spanned.clone().map(Rect::top).fold(f32::INFINITY, f32::min) - off;
+    let below = spanned.map(Rect::bottom).fold(f32::NEG_INFINITY, f32::max) + off;
+    let climb = |y: f32| (a.y - y).abs() + (b.y - y).abs();
+    let y = if climb(above) <= climb(below) {
+        above
+    } else {
+        below
+    };
+    vec![a, pos2(x1, a.y), pos2(x1, y), pos2(x2, y), pos2(x2, b.y), b]
+}
+
+/// The point a fraction `t` of the way along `path`, by length.
+fn along(path: &[Pos2], t: f32) -> Pos2 {
+    let total: f32 = path.windows(2).map(|w| w[0].distance(w[1])).sum();
+    let mut left = t.clamp(0.0, 1.0) * total;
+    for w in path.windows(2) {
+        let piece = w[0].distance(w[1]);
+        if left <= piece && piece > 0.0 {
+            return w[0] + (w[1] - w[0]) * (left / piece);
+        }
+        left -= piece;
+    }
+    path.last().copied().unwrap_or_default()
+}
+
 /// Every anchor by name: (`component.service`, point) and ports likewise.
 #[derive(Debug, Clone, Default)]
 pub struct Anchors {
     services: Vec<(String, Pos2)>,
     ports: Vec<(String, Pos2)>,
+    /// The boxes, which wires go around.
+    boxes: Vec<Rect>,
 }
 
 impl Anchors {
@@ -126,7 +171,18 @@ impl Anchors {
                 ));
             }
         }
-        Self { services, ports }
+        Self {
+            services,
+            ports,
+            boxes: rects.to_vec(),
+        }
+    }
+
+    /// The path of the wire from `service` to `port` (see [`wire_path`]).
+    fn wire(&self, service: &str, port: &str) -> Option<Vec<Pos2>> {
+        let lane = self.ports.iter().position(|(n, _)| n == port)?;
+        let (a, b) = (self.service(service)?, self.ports.get(lane)?.1);
+        Some(wire_path(a, b, &self.boxes, lane))
     }
 
     fn near(list: &[(String, Pos2)], at: Pos2, grab: f32) -> Option<&str> {
@@ -321,7 +377,7 @@ fn draw_wires(
                 continue;
             };
             let port = format!("{}.{}", c.name, p.name);
-            let (Some(a), Some(b)) = (anchors.service(service), anchors.port(&port)) else {
+            let Some(points) = anchors.wire(service, &port) else {
                 continue;
             };
             let busy = trace[start..].iter().any(|r| r.port == port);
@@ -331,7 +387,6 @@ fn draw_wires(
             } else {
                 Stroke::new(1.5, color.gamma_multiply(0.55))
             };
-            let points: Vec<Pos2> = (0..=24).map(|k| along(a, b, k as f32 / 24.0)).collect();
             painter.add(egui::Shape::line(points, stroke));
         }
     }
@@ -351,7 +406,7 @@ fn draw_tokens(
         if r.sent > now || matches!(r.pattern, "wiring" | "state" | "note") {
             continue;
         }
-        let (Some(a), Some(b)) = (anchors.service(&r.service), anchors.port(&r.port)) else {
+        let Some(wire) = anchors.wire(&r.service, &r.port) else {
             continue;
         };
         let upstream = matches!(
@@ -363,10 +418,10 @@ fn draw_tokens(
             Some(d) if d > now && d > r.sent => {
                 let f = ((now - r.sent) / (d - r.sent)) as f32;
                 let t = if upstream { 1.0 - f } else { f };
-                painter.circle_filled(along(a, b, t), 4.5, color);
+                painter.circle_filled(along(&wire, t), 4.5, color);
             }
             None if r.status == kinolab_components::Status::Lost && now - r.sent < 0.3 => {
-                let at = along(a, b, 0.5);
+                let at = along(&wire, 0.5);
                 marks::cross(painter, at, 5.0, Stroke::new(2.0, lost));
             }
             _ => {}
@@ -468,4 +523,39 @@ fn draw_robot_world(ui: &mut egui::Ui, run: &LabRun, size: egui::Vec2) -> Rect {
     let ink = ui.visuals().text_color();
     draw_robot(&painter, &view, &sim.pose, sim.body.radius(), color, ink);
     rect
+}
+
+#[cfg(test)]
+mod wire_tests {
+    use super::*;
+
+    /// Whether the segment from `a` to `b` passes through the inside of `r`.
+    fn crosses(r: Rect, a: Pos2, b: Pos2) -> bool {
+        (0..=100).any(|k| r.shrink(1.0).contains(a + (b - a) * (k as f32 / 100.0)))
+    }
+
+    #[test]
+    fn a_wire_between_neighbours_is_a_curve_and_a_long_one_goes_around() {
+        // Three columns of boxes; a service on the first, ports on the
+        // second and on the third, the middle box in the way of the long one.
+        let first = Rect::from_min_size(pos2(14.0, 14.0), vec2(100.0, 60.0));
+        let middle = Rect::from_min_size(pos2(128.0, 14.0), vec2(100.0, 90.0));
+        let last = Rect::from_min_size(pos2(242.0, 14.0), vec2(100.0, 60.0));
+        let boxes = [first, middle, last];
+        let service = pos2(first.right(), 60.0);
+        let near = wire_path(service, pos2(middle.left(), 70.0), &boxes, 0);
+        assert_eq!(near.len(), 25, "the S-curve");
+        let far = wire_path(service, pos2(last.right() - 100.0, 50.0), &boxes, 1);
+        assert_eq!(far.len(), 6, "the detour: {far:?}");
+        for w in far.windows(2) {
+            for r in boxes {
+                assert!(!crosses(r, w[0], w[1]), "{w:?} crosses {r:?}");
+            }
+        }
+        // A message token runs the whole path, end to end.
+        assert_eq!(along(&far, 0.0), service);
+        assert_eq!(along(&far, 1.0), pos2(last.left(), 50.0));
+        let half = along(&far, 0.5);
+        assert!(half.x > service.x && half.x < last.left(), "{half:?}");
+    }
 }

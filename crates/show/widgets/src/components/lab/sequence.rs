@@ -8,7 +8,7 @@ use kinolab_components::Status;
 
 use kinolab_components::Runtime;
 
-use crate::draw::{canvas, marks};
+use crate::draw::{canvas, marks, text_on_canvas};
 use crate::theme;
 
 /// Most arrows labelled; beyond this only the arrows are drawn.
@@ -84,10 +84,11 @@ pub fn show(ui: &mut egui::Ui, rt: &Runtime, window: f64) -> egui::Rect {
                     let at = pos2(a, y0);
                     painter.circle_filled(at, 3.0, faint);
                     if room(y0) {
-                        painter.text(
+                        text_on_canvas(
+                            &painter,
                             at + vec2(5.0, 0.0),
                             Align2::LEFT_CENTER,
-                            &r.summary,
+                            r.summary.clone(),
                             FontId::proportional(theme::SMALL_SIZE),
                             faint,
                         );
@@ -123,9 +124,12 @@ pub fn show(ui: &mut egui::Ui, rt: &Runtime, window: f64) -> egui::Rect {
             } else {
                 ""
             };
+            // On the canvas's colour: a label between lifelines further
+            // apart than their neighbours crosses the ones in between.
             let text = format!("{} {}{skipped}", r.kind, r.summary);
-            painter.text(
-                pos2((a + b) / 2.0, y0 - 1.0),
+            text_on_canvas(
+                &painter,
+                pos2((a + b) / 2.0, y0 - 2.0),
                 Align2::CENTER_BOTTOM,
                 text,
                 FontId::proportional(theme::SMALL_SIZE),

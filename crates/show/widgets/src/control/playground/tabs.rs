@@ -11,6 +11,7 @@ use super::settings::pose;
 use crate::control::field;
 use crate::draw::labels::Labels;
 use crate::theme;
+use crate::widget::sentence;
 
 impl Playground {
     pub(super) fn run_tab(&mut self, ui: &mut egui::Ui) {
@@ -263,13 +264,4 @@ pub(super) fn summary(t: &Trajectory) -> String {
         fixed(t.path_length, 2),
         fixed(t.peak_wheel_speed, 1)
     )
-}
-
-/// The core's reason as the start of a sentence: "Diverged after …".
-fn sentence(reason: &str) -> String {
-    let mut chars = reason.chars();
-    match chars.next() {
-        Some(first) => first.to_uppercase().chain(chars).collect(),
-        None => String::new(),
-    }
 }
