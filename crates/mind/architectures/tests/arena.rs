@@ -101,6 +101,17 @@ fn a_closed_door_and_a_moved_goal_force_replans() {
 }
 
 #[test]
+fn an_out_of_date_map_hurts_only_the_robot_that_steers_by_the_map_alone() {
+    // The architectures lesson asks learners to predict this run: the
+    // planners' map lacks the box; only the hierarchical robot, with no
+    // sensor reaching its wheels but through the map, touches it.
+    let s = scores(&office(Some("wrong-map")).unwrap());
+    let [h, r, y] = [&s[0], &s[1], &s[2]];
+    assert!(h.collisions > 0, "hierarchical: {h:?}");
+    assert_eq!(r.collisions + y.collisions, 0, "{r:?} {y:?}");
+}
+
+#[test]
 fn runs_are_deterministic() {
     let mut setup = office(Some("noise")).unwrap();
     setup.seed = 7;

@@ -42,6 +42,14 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
                 "how the behaviours are coordinated at first",
             ),
             param(
+                "top-node",
+                Kind::Choice {
+                    options: &["suppress", "inhibit"],
+                },
+                Some("suppress"),
+                "with `coordinator: subsumption`: what avoid, the top layer, does to the layer below it: replace its message (suppress) or silence its wire (inhibit)",
+            ),
+            param(
                 "seed",
                 Kind::Integer {
                     min: 0,
@@ -184,6 +192,12 @@ fn arena_rules(p: &Params) -> Result<(), String> {
         if p.given(name) && !layers {
             return Err(format!("`{name}` goes with `task: layers`"));
         }
+    }
+    if p.given("top-node") && layers {
+        return Err(
+            "`top-node` is for the arena's own stacks; `task: layers` sets its node with `node`"
+                .into(),
+        );
     }
     for group in p.groups("moved").unwrap_or_default() {
         if group[0] < 0.0 || group[0].fract() != 0.0 {

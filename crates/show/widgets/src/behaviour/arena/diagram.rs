@@ -27,6 +27,9 @@ impl Arena {
                     }
                 }
             });
+            if self.settings.coordinator == sets::CoordinatorKind::Subsumption {
+                self.top_node_choice(ui);
+            }
         }
         let names = self.names();
         let Some(coordinator) = self.setup.as_ref().map(|s| s.coordinator.clone()) else {
@@ -60,6 +63,26 @@ impl Arena {
                 crate::widget::message_ui(ui, &text, ui.visuals().text_color());
             }
         }
+    }
+}
+
+impl Arena {
+    /// Whether avoid's node replaces the message below it or silences it.
+    fn top_node_choice(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label("avoid's node:");
+            for (kind, name) in [
+                (NodeKind::Suppress, "suppress"),
+                (NodeKind::Inhibit, "inhibit"),
+            ] {
+                let chosen = self.settings.top_node == kind;
+                if crate::widget::choice(ui, chosen, name).clicked() && !chosen {
+                    let mut settings = self.settings.clone();
+                    settings.top_node = kind;
+                    self.change(settings);
+                }
+            }
+        });
     }
 }
 

@@ -14,6 +14,7 @@ mod task;
 mod timeline;
 
 use kinolab_behaviours::coordinate::Trace;
+use kinolab_behaviours::coordinate::subsumption::NodeKind;
 use kinolab_behaviours::run::{Runner, Setup};
 use kinolab_world::sensors::RayReading;
 use kinolab_world::{Command, Pose, Vec2, World};
@@ -37,6 +38,9 @@ struct Settings {
     world: String,
     set: Set,
     coordinator: CoordinatorKind,
+    /// What the top layer's node does in the subsumption stack.
+    #[serde(rename = "top-node")]
+    top_node: NodeKind,
     seed: u64,
     task: Option<Task>,
     /// Obstacles moved: number, x, y.
@@ -135,7 +139,7 @@ impl Settings {
             ),
             None => (
                 sets::behaviours(self.set),
-                sets::coordinator(self.set, self.coordinator),
+                sets::coordinator(self.set, self.coordinator, self.top_node),
             ),
         };
         let mut setup = Setup::new(world, behaviours, coordinator);

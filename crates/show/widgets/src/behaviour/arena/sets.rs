@@ -140,15 +140,16 @@ fn purpose(set: Set) -> &'static str {
     }
 }
 
-/// Coordinator `kind` for set `set`.
-pub(super) fn coordinator(set: Set, kind: CoordinatorKind) -> Coordinator {
+/// Coordinator `kind` for set `set`; in the subsumption stack, avoid's
+/// node on the layer below is of kind `top`.
+pub(super) fn coordinator(set: Set, kind: CoordinatorKind, top: NodeKind) -> Coordinator {
     let aim = purpose(set);
     match kind {
         CoordinatorKind::Subsumption => Coordinator::Subsumption(Subsumption {
             layers: vec!["wander".into(), aim.into(), "avoid".into()],
             nodes: vec![
                 node(NodeKind::Suppress, aim, "wander"),
-                node(NodeKind::Suppress, "avoid", aim),
+                node(top, "avoid", aim),
             ],
         }),
         CoordinatorKind::Voting => Coordinator::Voting(Voting {

@@ -157,3 +157,49 @@ fn a_dragged_obstacle_and_goal_travel_in_the_link_and_the_run_file() {
     settings.moved = vec![[99.0, 3.0, 2.0]];
     assert!(settings.setup().is_err());
 }
+
+#[test]
+fn an_inhibiting_top_node_hands_the_robot_to_wander_not_to_avoid() {
+    // Who drove, and for how long (s), in the scattered world.
+    let drive = |top: &str| {
+        let a = arena(&[("coordinator", "subsumption"), ("top-node", top)]);
+        let setup = a.setup.clone().unwrap_or_else(|| panic!("no setup"));
+        let r = kinolab_behaviours::run::run(&setup).unwrap_or_else(|e| panic!("{e}"));
+        let mut who = std::collections::BTreeMap::<String, f64>::new();
+        for s in &r.control {
+            *who.entry(s.behaviour.clone().unwrap_or_default())
+                .or_default() += s.to - s.from;
+        }
+        (r.metrics, who)
+    };
+    let (suppress, by_suppress) = drive("suppress");
+    assert!(suppress.reached && suppress.collisions == 0, "{suppress:?}");
+    assert!(
+        by_suppress.get("avoid").copied().unwrap_or(0.0) > 1.0,
+        "{by_suppress:?}"
+    );
+    assert!(!by_suppress.contains_key("wander"), "{by_suppress:?}");
+    // Inhibit silences go's wire and passes nothing on: avoid never drives,
+    // go's own node on wander lets go, and wander steers into things.
+    let (inhibit, by_inhibit) = drive("inhibit");
+    assert!(!by_inhibit.contains_key("avoid"), "{by_inhibit:?}");
+    assert!(
+        by_inhibit.get("wander").copied().unwrap_or(0.0) > 5.0,
+        "{by_inhibit:?}"
+    );
+    assert!(inhibit.collisions > 0, "{inhibit:?}");
+}
+
+#[test]
+fn the_top_node_is_for_the_arenas_own_stacks() {
+    let spec = spec(
+        NAME,
+        &[
+            ("coordinator", "subsumption"),
+            ("task", "layers"),
+            ("top-node", "inhibit"),
+        ],
+    );
+    let err = kinolab_schema::validate(&spec).err().unwrap_or_default();
+    assert!(err.contains("top-node"), "{err}");
+}
