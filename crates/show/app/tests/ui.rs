@@ -701,3 +701,48 @@ fn an_emphasised_word_keeps_its_space_at_any_wrap() {
         "the sweep never put `away` at a line start"
     );
 }
+
+/// The wheel drive's hint, the one widget that keeps driving on its own.
+const DRIVE_HINT: &str = "arrow keys to drive";
+
+#[test]
+fn a_page_at_rest_asks_for_no_frames() {
+    // Every lesson and widget stops asking for frames within a few once
+    // nothing changes, except a wheel drive still driving (next test).
+    let app = KinolabApp::new(None, "");
+    let addresses = app.course().unwrap().addresses();
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 16000.0))
+        .with_max_steps(30)
+        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let widgets = kinolab_schema::widgets().map(|w| format!("gallery/{}", w.name));
+    let mut busy = Vec::new();
+    for address in widgets.chain(addresses) {
+        h.state_mut().follow_hash(&format!("#/{address}"));
+        let settled = h.run_ok().is_some();
+        let driving = h.query_all_by_label_contains(DRIVE_HINT).next().is_some();
+        if !settled && !driving {
+            busy.push(address);
+        }
+    }
+    assert!(busy.is_empty(), "still asking for frames: {busy:?}");
+}
+
+#[test]
+fn a_wheel_drive_left_alone_pauses_itself() {
+    let app = KinolabApp::new(None, "");
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 1600.0))
+        .with_step_dt(0.05)
+        .with_max_steps(700)
+        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    h.state_mut().follow_hash("#/gallery/wheel-drive");
+    let steps = h.run_ok().expect("the drive rests within 35 s");
+    assert!(steps >= 590, "it drove for 30 s first, {steps} steps");
+    h.get_by_label_contains("Paused after 30 s");
+    // Run drives on, and it asks for frames again.
+    h.get_by_label("Run").click();
+    h.run_steps(3);
+    assert!(h.query_by_label_contains("Paused after").is_none());
+    assert!(h.ctx.has_requested_repaint());
+}

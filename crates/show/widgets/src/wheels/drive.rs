@@ -70,7 +70,13 @@ struct Drive {
     pose: [f64; 3],
     trail: VecDeque<[f64; 2]>,
     running: bool,
+    /// Seconds driven since the learner last changed anything.
+    unattended: f64,
 }
+
+/// A drive left alone this long pauses itself, so a page at rest asks for
+/// no frames (a phone's battery, a slow laptop's fan), s.
+const REST_AFTER: f64 = 30.0;
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     let chassis = kinolab_schema::robot_of(p)?;
@@ -104,6 +110,7 @@ impl Drive {
             pose: [0.0, 0.0, 0.0],
             trail: VecDeque::new(),
             running: true,
+            unattended: 0.0,
         };
         if drive.settings.mode == Mode::Wheels && drive.settings.spins.is_none() {
             drive.spins_from_twist();
@@ -245,6 +252,7 @@ impl Drive {
                 .clicked()
             {
                 self.running = !self.running;
+                self.unattended = 0.0;
             }
             if ui.button("Reset").clicked() {
                 self.chassis = self.start.clone();
@@ -341,6 +349,11 @@ impl Drive {
             return;
         }
         let dt = f64::from(ui.input(|i| i.stable_dt)).clamp(0.0, 0.05);
+        self.unattended += dt;
+        if self.unattended > REST_AFTER {
+            self.running = false;
+            return;
+        }
         self.pose = integrate(self.pose, twist, dt);
         self.swing_castors(twist, dt);
         let here = [self.pose[0], self.pose[1]];
@@ -494,6 +507,7 @@ impl Drive {
 
 impl LabWidget for Drive {
     fn ui(&mut self, ui: &mut egui::Ui) {
+        let before = self.settings.clone();
         self.controls(ui);
         let width = ui.available_width().min(900.0);
         let (response, painter) = canvas(ui, vec2(width, 360.0), Sense::click());
@@ -502,6 +516,12 @@ impl LabWidget for Drive {
             response.request_focus();
         }
         self.keyboard(ui, &response);
+        if self.settings != before {
+            // A change wakes a drive that paused itself, not one the
+            // learner paused.
+            self.running |= self.unattended > REST_AFTER;
+            self.unattended = 0.0;
+        }
         let (twist, note) = self.current_twist();
         self.step(ui, twist);
         self.floor(ui, &painter, rect, twist);
@@ -515,7 +535,13 @@ impl LabWidget for Drive {
         );
         self.readouts(ui, twist);
         // One line kept for notes, so the layout does not jump.
-        ui.label(RichText::new(note.unwrap_or_default()).color(theme::error_color(ui)));
+        if !self.running && self.unattended > REST_AFTER {
+            ui.label(format!(
+                "Paused after {REST_AFTER:.0} s with nothing changed: press Run to drive on."
+            ));
+        } else {
+            ui.label(RichText::new(note.unwrap_or_default()).color(theme::error_color(ui)));
+        }
         ui.label(
             RichText::new(
                 "Click the floor (or hover it) and use the arrow keys to drive; Q and E slide sideways.",
