@@ -74,14 +74,19 @@ impl Sandbox {
             egui::StrokeKind::Inside,
         );
         if let Some(field) = &self.field {
-            if self.settings.shading {
-                shade(&painter, &view, &area, field, ink.accent);
-            }
+            let wanted = Wanted {
+                version: self.version,
+                coarse: self.dragging,
+                shading: self.settings.shading,
+                streamlines: self.settings.streamlines,
+            };
+            let b = &mut self.backdrop;
+            b.update(field, &area, wanted);
+            shade(&painter, &view, b, field, ink.accent);
             self.draw_basins(&painter, &view, &ink);
-            arrows(&painter, &view, &area, field, ink.faint);
-            if self.settings.streamlines {
-                streamlines(&painter, &view, &area, field, ink.text.gamma_multiply(0.55));
-            }
+            let b = &self.backdrop;
+            arrows(&painter, &view, b, field, ink.faint);
+            lines(&painter, &view, b, ink.text.gamma_multiply(0.55));
         }
         // Range circles and bands end at the field's edge, not in the
         // frame around it.
@@ -103,6 +108,11 @@ impl Sandbox {
             labels.draw(&painter, &egui::FontId::proportional(theme::BODY_SIZE));
         }
         let held = self.handles(ui, &view);
+        if self.dragging && !held {
+            // Released: one more frame, at full detail.
+            ui.ctx().request_repaint();
+        }
+        self.dragging = held;
         if let (Some(field), Some(at), false) =
             (&self.field, response.hover_pos(), self.hides_readout())
         {
@@ -382,46 +392,86 @@ fn strength(field: &Field, m: f64) -> f32 {
     (1.0 - (-m / (field.scale() * 0.25)).exp()) as f32
 }
 
-/// The field's strength as shading: stronger is darker accent.
-fn shade(
-    painter: &Painter,
-    view: &PlaneView,
-    area: &kinolab_world::Rect,
-    field: &Field,
-    color: Color32,
-) {
-    let nx = SHADE_COLUMNS;
-    let ny = rows(area, nx, 4.0, 60.0);
-    let mut mesh = Mesh::default();
-    let (dx, dy) = (area.width() / nx as f64, area.height() / ny as f64);
-    for j in 0..ny {
-        for i in 0..nx {
-            let p = [
-                area.x_min + (i as f64 + 0.5) * dx,
-                area.y_min + (j as f64 + 0.5) * dy,
-            ];
-            let t = strength(field, field.vector(v(p)).norm());
-            let a = view.to_screen([p[0] - dx / 2.0, p[1] + dy / 2.0]);
-            let b = view.to_screen([p[0] + dx / 2.0, p[1] - dy / 2.0]);
-            mesh.add_colored_rect(Rect::from_two_pos(a, b), color.gamma_multiply(0.35 * t));
+/// What the backdrop is sampled for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Wanted {
+    version: u64,
+    /// A piece is being dragged: a coarser shading and shorter streamlines,
+    /// so the drag keeps up; full detail on release.
+    coarse: bool,
+    shading: bool,
+    streamlines: bool,
+}
+
+/// What the canvas draws under the pieces, sampled once per version of the
+/// field: a hover, a scroll or a played descent redraws from it without
+/// evaluating the field again.
+#[derive(Debug, Default)]
+pub(super) struct Backdrop {
+    sampled: Option<Wanted>,
+    /// The field's area the grids cover, m.
+    size: [f64; 2],
+    /// Cell centres and the field there, row by row, and the grid's size.
+    shade: Vec<(Vec2, Vec2)>,
+    shade_grid: (usize, usize),
+    arrows: Vec<(Vec2, Vec2)>,
+    arrow_grid: (usize, usize),
+    lines: Vec<Vec<Vec2>>,
+}
+
+impl Backdrop {
+    fn update(&mut self, field: &Field, area: &kinolab_world::Rect, wanted: Wanted) {
+        if self.sampled == Some(wanted) {
+            return;
         }
+        self.sampled = Some(wanted);
+        self.size = [area.width(), area.height()];
+        let columns = if wanted.coarse {
+            SHADE_COLUMNS / 2
+        } else {
+            SHADE_COLUMNS
+        };
+        self.shade_grid = (columns, rows(area, columns, 4.0, 60.0));
+        self.shade = match wanted.shading {
+            true => field.arrows(area, self.shade_grid.0, self.shade_grid.1),
+            false => Vec::new(),
+        };
+        self.arrow_grid = (ARROW_COLUMNS, rows(area, ARROW_COLUMNS, 3.0, 30.0));
+        self.arrows = field.arrows(area, self.arrow_grid.0, self.arrow_grid.1);
+        let steps = if wanted.coarse { 150 } else { 400 };
+        self.lines = match wanted.streamlines {
+            true => streamlines(area, field, steps),
+            false => Vec::new(),
+        };
+    }
+
+    /// A cell of a `grid` (columns, rows) over the area, m.
+    fn cell(&self, (nx, ny): (usize, usize)) -> [f64; 2] {
+        [
+            self.size[0] / nx.max(1) as f64,
+            self.size[1] / ny.max(1) as f64,
+        ]
+    }
+}
+
+/// The field's strength as shading: stronger is darker accent.
+fn shade(painter: &Painter, view: &PlaneView, b: &Backdrop, field: &Field, color: Color32) {
+    let (hx, hy) = (b.cell(b.shade_grid)[0] / 2.0, b.cell(b.shade_grid)[1] / 2.0);
+    let mut mesh = Mesh::default();
+    for &(p, f) in &b.shade {
+        let t = strength(field, f.norm());
+        let a = view.to_screen([p.x - hx, p.y + hy]);
+        let c = view.to_screen([p.x + hx, p.y - hy]);
+        mesh.add_colored_rect(Rect::from_two_pos(a, c), color.gamma_multiply(0.35 * t));
     }
     painter.add(mesh);
 }
 
 /// Arrows on a grid: direction exact, length growing with strength up to
 /// most of a cell.
-fn arrows(
-    painter: &Painter,
-    view: &PlaneView,
-    area: &kinolab_world::Rect,
-    field: &Field,
-    color: Color32,
-) {
-    let nx = ARROW_COLUMNS;
-    let ny = rows(area, nx, 3.0, 30.0);
-    let cell = view.length(area.width() / nx as f64);
-    for (p, f) in field.arrows(area, nx, ny) {
+fn arrows(painter: &Painter, view: &PlaneView, b: &Backdrop, field: &Field, color: Color32) {
+    let cell = view.length(b.cell(b.arrow_grid)[0]);
+    for &(p, f) in &b.arrows {
         let m = f.norm();
         if m < 1e-9 {
             continue;
@@ -433,31 +483,93 @@ fn arrows(
     }
 }
 
-/// Streamlines from a grid of seeds, each followed downstream.
-fn streamlines(
-    painter: &Painter,
-    view: &PlaneView,
-    area: &kinolab_world::Rect,
-    field: &Field,
-    color: Color32,
-) {
-    let step = (area.width() + area.height()) / 300.0;
+/// The streamlines, as screen polylines.
+fn lines(painter: &Painter, view: &PlaneView, b: &Backdrop, color: Color32) {
+    for line in &b.lines {
+        let pts = line.iter().map(|&p| view.to_screen(w(p))).collect();
+        painter.add(egui::Shape::line(pts, Stroke::new(1.0, color)));
+    }
+}
+
+/// Streamlines from a grid of seeds, each followed downstream for at most
+/// `steps` steps.
+fn streamlines(area: &kinolab_world::Rect, field: &Field, steps: usize) -> Vec<Vec<Vec2>> {
+    let step = (area.width() + area.height()) / 300.0 * 400.0 / steps as f64;
+    let mut lines = Vec::with_capacity(15);
     for j in 0..3 {
         for i in 0..5 {
             let mut p = Vec2::new(
                 area.x_min + (i as f64 + 0.25) * area.width() / 5.0,
                 area.y_min + (j as f64 + 0.5) * area.height() / 3.0,
             );
-            let mut pts = vec![view.to_screen(w(p))];
-            for _ in 0..400 {
+            let mut line = vec![p];
+            for _ in 0..steps {
                 let f = field.vector(p);
                 if f.norm() < 1e-6 || !area.contains(p.x, p.y) {
                     break;
                 }
                 p += f / f.norm() * step;
-                pts.push(view.to_screen(w(p)));
+                line.push(p);
             }
-            painter.add(egui::Shape::line(pts, Stroke::new(1.0, color)));
+            lines.push(line);
         }
+    }
+    lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_backdrop_is_sampled_once_per_field_and_coarser_while_dragging() {
+        let preset = kinolab_fields::catalogue::preset("u-shaped-wall").expect("a preset");
+        let field = preset.field().expect("a field");
+        let area = kinolab_world::Rect::from(preset.area);
+        let still = Wanted {
+            version: 1,
+            coarse: false,
+            shading: true,
+            streamlines: true,
+        };
+        let mut b = Backdrop::default();
+        b.update(&field, &area, still);
+        let (nx, ny) = b.shade_grid;
+        assert_eq!((nx, b.shade.len()), (SHADE_COLUMNS, nx * ny));
+        assert_eq!(b.lines.len(), 15);
+        // The same field again (a hover, a scroll): nothing is resampled.
+        let first = b.shade.as_ptr();
+        b.update(&field, &area, still);
+        assert_eq!(b.shade.as_ptr(), first);
+        // Dragging: a quarter of the shading's samples.
+        b.update(
+            &field,
+            &area,
+            Wanted {
+                version: 2,
+                coarse: true,
+                ..still
+            },
+        );
+        assert_eq!(b.shade_grid.0, SHADE_COLUMNS / 2);
+        assert!(
+            b.shade.len() * 3 < nx * ny,
+            "{} of {}",
+            b.shade.len(),
+            nx * ny
+        );
+        // The samples are the field's own values at the cell centres.
+        let (p, f) = b.arrows[7];
+        assert_eq!(field.vector(p), f);
+        // Shading off: nothing sampled for it.
+        b.update(
+            &field,
+            &area,
+            Wanted {
+                shading: false,
+                ..still
+            },
+        );
+        assert!(b.shade.is_empty());
     }
 }

@@ -172,6 +172,10 @@ struct Sandbox {
     /// The point robot's descent, played step by step.
     descent: Option<Arc<Descent>>,
     player: Option<Player<Descending>>,
+    /// The shading, arrows and streamlines of this version of the field.
+    backdrop: canvas::Backdrop,
+    /// Whether a handle was held last frame (the backdrop is coarser).
+    dragging: bool,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
@@ -198,6 +202,8 @@ impl Sandbox {
             task,
             descent: None,
             player: None,
+            backdrop: canvas::Backdrop::default(),
+            dragging: false,
         };
         sandbox.changed();
         Ok(sandbox)
