@@ -275,7 +275,7 @@ pub fn inline_ui(
 fn keep_with_punctuation(
     ui: &mut egui::Ui,
     span: &Span,
-    math: Option<&InlineMath>,
+    math: Option<&InlineMath<'_>>,
     next: Option<&Span>,
     size: f32,
 ) {

@@ -746,3 +746,18 @@ fn a_wheel_drive_left_alone_pauses_itself() {
     assert!(h.query_by_label_contains("Paused after").is_none());
     assert!(h.ctx.has_requested_repaint());
 }
+
+#[test]
+fn a_screen_reader_hears_formulas_in_words() {
+    // "A wheel of radius $r$ spinning at $\dot\varphi$ … forward at
+    // $r\dot\varphi$": each formula is in the accessibility tree as words.
+    let h = harness(KinolabApp::new(None, "#/wheeled-locomotion/wheel-kinds"));
+    for words in ["r phi dot", "phi dot"] {
+        assert!(
+            h.query_all_by_label(words).next().is_some(),
+            "no formula read as {words:?}"
+        );
+    }
+    // Nothing on the page is read as TeX source.
+    assert!(h.query_all_by_label_contains("\\dot").next().is_none());
+}

@@ -23,6 +23,8 @@ mod tree;
 
 #[cfg(feature = "egui")]
 pub mod layout;
+pub mod speak;
 
 pub use parse::{MathError, parse};
+pub use speak::spoken;
 pub use tree::{AccentKind, Delimiter, MAX_NESTING, Math, MatrixKind, OpKind, Variant};

@@ -22,15 +22,20 @@ pub fn math_widget(ui: &mut Ui, math: &Math, style: &MathStyle) -> Response {
 /// An inline formula laid out once: measure it (to decide where a row of
 /// text wraps), then show it, without laying it out twice.
 #[derive(Debug, Clone)]
-pub struct InlineMath {
+pub struct InlineMath<'a> {
+    math: &'a Math,
     layout: MathBox,
     placement: InlinePlacement,
 }
 
-impl InlineMath {
-    pub fn new(ui: &Ui, math: &Math, style: &MathStyle) -> Self {
+impl<'a> InlineMath<'a> {
+    pub fn new(ui: &Ui, math: &'a Math, style: &MathStyle) -> Self {
         let (layout, placement) = layout_inline(ui, math, style);
-        Self { layout, placement }
+        Self {
+            math,
+            layout,
+            placement,
+        }
     }
 
     /// The size [`InlineMath::show`] will allocate.
@@ -45,8 +50,16 @@ impl InlineMath {
             let origin = rect.left_top() + vec2(0.0, self.placement.baseline);
             self.layout.paint(ui.painter(), origin, color);
         }
+        speak(&response, self.math);
         response
     }
+}
+
+/// A formula's words for a screen reader (built only when one listens).
+fn speak(response: &Response, math: &Math) {
+    response.widget_info(|| {
+        egui::WidgetInfo::labeled(egui::accesskit::Role::Label, true, crate::spoken(math))
+    });
 }
 
 pub(super) fn layout_inline(ui: &Ui, math: &Math, style: &MathStyle) -> (MathBox, InlinePlacement) {
@@ -90,6 +103,7 @@ pub fn display_math(ui: &mut Ui, math: &Math, style: &MathStyle) -> Response {
         );
         layout.paint(ui.painter(), origin, style.color);
     }
+    speak(&response, math);
     response
 }
 
