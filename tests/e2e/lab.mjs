@@ -302,6 +302,32 @@ try {
     await page.screenshot({ path: `${out}/ways-out.png` });
   });
 
+  await check("a screen reader finds headings, quiz options and formulas in words, and can answer", async () => {
+    const reader = await context.newPage();
+    watch(reader, "screen reader");
+    const address = "wheeled-locomotion/wheel-kinds";
+    // Off by default: the page holds no mirror until support is turned on.
+    await reader.goto(`${server.url}#/${address}`);
+    await waitForPage(reader, address);
+    await reader.waitForTimeout(300);
+    assert.equal(await reader.locator("#kinolab-a11y [data-node]").count(), 0);
+    // The page's first element turns it on (first in a screen reader's
+    // reading order; the canvas keeps Tab for the lab's own focus order).
+    assert.equal(await reader.evaluate(() => document.body.firstElementChild.id), "kinolab-a11y-on");
+    await reader.focus("#kinolab-a11y-on");
+    await reader.keyboard.press("Enter");
+    await reader.waitForFunction(() => document.querySelectorAll("#kinolab-a11y [data-node]").length > 50);
+    assert.ok(await reader.getByRole("heading").count() >= 5, "headings");
+    const option = reader.getByRole("radio", { name: "A steered standard wheel" });
+    assert.equal(await option.count(), 1, "a quiz option by its name");
+    assert.ok(await reader.getByText("r phi dot", { exact: true }).count() >= 1, "a formula in words");
+    // Choosing the option as a screen reader does (a click on the element)
+    // reaches the lab.
+    await option.evaluate((e) => e.click());
+    await reader.waitForFunction(() => document.querySelector('#kinolab-a11y [aria-label="A steered standard wheel"]')?.getAttribute("aria-checked") === "true");
+    await reader.close();
+  });
+
   await check("no error box and no panic text", async () => {
     const text = await page.evaluate(() => document.body.innerText);
     assert.ok(!/panicked|internal error|could not start/i.test(text), text);

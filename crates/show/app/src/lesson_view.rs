@@ -66,7 +66,13 @@ fn block_ui(
         Block::Heading { level, text } => {
             ui.add_space(if *level <= 2 { 14.0 } else { 8.0 });
             let size = theme::heading_size(*level);
-            inline_ui(ui, text, size, true, state.navigate);
+            let heading = ui.scope(|ui| inline_ui(ui, text, size, true, state.navigate));
+            // A screen reader lists and jumps by headings.
+            ui.ctx()
+                .accesskit_node_builder(heading.response.id, |node| {
+                    node.set_role(egui::accesskit::Role::Heading);
+                    node.set_level(usize::from(*level));
+                });
             ui.add_space(4.0);
         }
         Block::Paragraph(spans) => {

@@ -6,6 +6,7 @@ use std::cell::RefCell;
 use crate::route::Page;
 use crate::shell::KinolabApp;
 
+pub mod a11y;
 pub mod storage;
 
 /// How many recent frames' CPU times are kept for the benchmark.

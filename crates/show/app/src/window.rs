@@ -124,6 +124,7 @@ pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
             crate::web::storage::set_aside(text);
         }
         crate::web::storage::listen(&cc.egui_ctx);
+        crate::web::a11y::install(&cc.egui_ctx);
     }
     if touch {
         // A finger drag over text scrolls from the very first touch.

@@ -760,4 +760,7 @@ fn a_screen_reader_hears_formulas_in_words() {
     }
     // Nothing on the page is read as TeX source.
     assert!(h.query_all_by_label_contains("\\dot").next().is_none());
+    // Its sections are headings a screen reader can jump between.
+    let headings = h.query_all_by_role(egui::accesskit::Role::Heading).count();
+    assert!(headings >= 5, "{headings} headings");
 }
