@@ -325,6 +325,11 @@ try {
     // reaches the lab.
     await option.evaluate((e) => e.click());
     await reader.waitForFunction(() => document.querySelector('#kinolab-a11y [aria-label="A steered standard wheel"]')?.getAttribute("aria-checked") === "true");
+    // No keyboard trap: Escape, then Shift+Tab, leaves the canvas.
+    await reader.focus("#kinolab-canvas");
+    await reader.keyboard.press("Escape");
+    await reader.keyboard.press("Shift+Tab");
+    assert.equal(await reader.evaluate(() => document.activeElement.id), "kinolab-a11y-on");
     await reader.close();
   });
 

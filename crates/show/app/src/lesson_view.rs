@@ -226,6 +226,7 @@ pub fn inline_ui(
             keep_with_punctuation(ui, span, math.as_ref(), spans.get(i + 1), size);
             match span {
                 Span::Text { text, style } => {
+                    let text = no_space_at_row_start(ui, text, size);
                     let mut rich = RichText::new(text).size(size);
                     if strong || style.strong {
                         rich = rich.strong();
@@ -254,7 +255,13 @@ pub fn inline_ui(
                     }
                 }
                 Span::Code(code) => {
-                    ui.label(RichText::new(code).code().size(theme::CODE_SIZE));
+                    let label = egui::Label::new(RichText::new(code).code().size(theme::CODE_SIZE));
+                    // A short piece of code (`push(o, x, y, d)`) never breaks.
+                    if code.chars().count() <= SHORT_CODE {
+                        ui.add(label.wrap_mode(egui::TextWrapMode::Extend));
+                    } else {
+                        ui.add(label);
+                    }
                 }
                 Span::Math(_) => {
                     if let Some(math) = &math {
@@ -272,6 +279,36 @@ pub fn inline_ui(
             }
         }
     });
+}
+
+/// Text that starts with a space (after an italic word, a formula, a
+/// link) must not begin a row with it: when its first word does not fit
+/// on this row, start the next one, without the space.
+fn no_space_at_row_start<'t>(ui: &mut egui::Ui, text: &'t str, size: f32) -> &'t str {
+    let trimmed = text.trim_start();
+    if trimmed.len() == text.len() {
+        return text;
+    }
+    let at_start = ui.cursor().min.x <= ui.max_rect().left() + 0.5;
+    if at_start {
+        return trimmed;
+    }
+    let first = &text
+        [..text.len() - trimmed.len() + trimmed.find(char::is_whitespace).unwrap_or(trimmed.len())];
+    let width = ui.ctx().fonts_mut(|f| {
+        f.layout_no_wrap(
+            first.to_owned(),
+            egui::FontId::proportional(size),
+            Color32::WHITE,
+        )
+        .size()
+        .x
+    });
+    if width > ui.available_size_before_wrap().x {
+        ui.end_row();
+        return trimmed;
+    }
+    text
 }
 
 /// Start a new row before a formula, inline code or a link when the word
@@ -383,6 +420,9 @@ fn table_ui(
 /// Share `usable` points among columns in proportion to `weights`, none
 /// narrower than its `least`; when even the least widths do not fit, the
 /// columns get exactly those (and the table scrolls).
+/// Inline code up to this many characters is kept on one line.
+const SHORT_CODE: usize = 24;
+
 /// The widest piece of `cell` that cannot wrap: a word, a word of code or
 /// a whole formula, at text size `size`.
 fn widest_atom(ui: &egui::Ui, cell: &Inline, size: f32) -> f32 {
@@ -399,6 +439,13 @@ fn widest_atom(ui: &egui::Ui, cell: &Inline, size: f32) -> f32 {
     cell.iter()
         .map(|span| match span {
             Span::Text { text, .. } => words(text, egui::FontId::proportional(size)),
+            Span::Code(code) if code.chars().count() <= SHORT_CODE => {
+                let font = egui::FontId::monospace(theme::CODE_SIZE);
+                ui.painter()
+                    .layout_no_wrap(code.clone(), font, Color32::WHITE)
+                    .size()
+                    .x
+            }
             Span::Code(code) => words(code, egui::FontId::monospace(theme::CODE_SIZE)),
             Span::Math(math) => InlineMath::new(ui, math, &math_style(ui, size)).size().x,
             Span::Image { .. } | Span::LineBreak => 0.0,

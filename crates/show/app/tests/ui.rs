@@ -702,6 +702,35 @@ fn an_emphasised_word_keeps_its_space_at_any_wrap() {
     );
 }
 
+#[test]
+fn no_line_starts_with_a_space() {
+    // The text after an italic word starts with a space; when the italic
+    // word ends a line, the next line must not begin with that space.
+    let text = "Reading off the plot tells you *which* speed? A small dog trots \
+                at a steady pace across a yard, and its legs keep time.";
+    let spans = kinolab_lessons::parse_inline("test.md", 1, text).unwrap();
+    let mut wrapped_after_italic = 0;
+    for width in (150..=420).step_by(3) {
+        let h = running_text(&spans, width as f32);
+        let mut rows = text_boxes(&h);
+        rows.retain(|(_, r)| r.y1 - r.y0 < 24.0);
+        let left = rows.iter().map(|(_, r)| r.x0).fold(f64::INFINITY, f64::min);
+        for (t, r) in &rows {
+            if r.x0 <= left + 0.5 {
+                assert!(
+                    !t.starts_with(' '),
+                    "at {width} px a line starts with `{t}`"
+                );
+                wrapped_after_italic += usize::from(t.starts_with("speed?"));
+            }
+        }
+    }
+    assert!(
+        wrapped_after_italic >= 2,
+        "the sweep never wrapped after `which`"
+    );
+}
+
 /// The wheel drive's hint, the one widget that keeps driving on its own.
 const DRIVE_HINT: &str = "arrow keys to drive";
 

@@ -125,7 +125,10 @@ fn offer_button(ui: &mut egui::Ui, offer: &Export<'_>, state: &mut BarState) {
             make,
         } => {
             let hint = format!("Save this run's input as {file}: `{command}` reproduces it");
-            if ui.button("Save run").on_hover_text(hint).clicked() {
+            let button = ui.button("Save run").on_hover_ui(|ui| {
+                crate::widget::message_ui(ui, &hint, ui.visuals().text_color());
+            });
+            if button.clicked() {
                 state.status = match make() {
                     Ok(text) => {
                         request_save(ui.ctx(), file, "application/json", text.into_bytes());

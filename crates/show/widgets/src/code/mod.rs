@@ -215,7 +215,7 @@ impl Code {
                 .strong()
                 .size(theme::BODY_SIZE),
         );
-        ui.label(self.exercise.task);
+        crate::widget::message_ui(ui, self.exercise.task, ui.visuals().text_color());
         let signature = self.exercise.signature.text();
         let returns = self.exercise.hook.returns();
         ui.label(

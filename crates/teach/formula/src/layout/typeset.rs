@@ -318,9 +318,12 @@ impl<'f, 'v> Typesetter<'f, 'v> {
             let tiny = level.script(self.min_size).script(self.min_size);
             self.node(m, tiny, depth)
         });
+        // A little room before the sign, so a letter or a bracket before
+        // it (s√2) does not touch it.
+        let bearing = 0.08 * size;
         let x0 = index
             .as_ref()
-            .map_or(0.0, |i| (i.width - 0.55 * sign_width).max(0.0));
+            .map_or(bearing, |i| (i.width - 0.55 * sign_width).max(bearing));
 
         let body_x = x0 + sign_width + padding;
         let end_x = body_x + body.width + padding;

@@ -17,6 +17,8 @@ use crate::theme;
 const LINE: f32 = 15.0;
 const HEADER: f32 = 30.0;
 const GAP: f32 = 14.0;
+/// The widest gap between columns, points.
+const WIDE_GAP: f32 = 72.0;
 /// A press this close (points) to an anchor grabs it, with a mouse.
 const GRAB: f32 = 12.0;
 /// The same with a finger, which covers more than it can aim.
@@ -55,12 +57,22 @@ pub fn columns(views: &[ComponentView]) -> Vec<usize> {
 /// and the height the layout needs.
 fn boxes(views: &[ComponentView], col: &[usize], area: Rect) -> (Vec<Rect>, f32) {
     let ncols = col.iter().max().map_or(1, |m| m + 1);
-    let width = ((area.width() - GAP * (ncols as f32 + 1.0)) / ncols as f32).clamp(70.0, 190.0);
+    let n = ncols as f32;
+    // Gaps twice the margin where the boxes stay wide enough for their
+    // names, so wires between neighbours have room to curve.
+    let width_with = |gap: f32| ((area.width() - gap * (n + 1.0)) / n).clamp(70.0, 190.0);
+    let width = if width_with(2.0 * GAP) >= 100.0 {
+        width_with(2.0 * GAP)
+    } else {
+        width_with(GAP)
+    };
+    // Room left over widens the gaps between columns, where the wires run.
+    let gap = ((area.width() - width * n) / (n + 1.0)).clamp(GAP, WIDE_GAP);
     let mut heights = vec![GAP; ncols];
     let mut rects = Vec::with_capacity(views.len());
     for (i, c) in views.iter().enumerate() {
         let h = HEADER + LINE * (c.services.len() + c.ports.len()) as f32 + 4.0;
-        let x = area.left() + GAP + col[i] as f32 * (width + GAP);
+        let x = area.left() + gap + col[i] as f32 * (width + gap);
         let y = area.top() + heights[col[i]];
         rects.push(Rect::from_min_size(pos2(x, y), vec2(width, h)));
         heights[col[i]] += h + GAP;
@@ -81,7 +93,9 @@ fn port_anchor(r: Rect, services: usize, j: usize) -> Pos2 {
 
 /// A point on the S-curve from `a` (a service) to `b` (a port).
 fn curve_point(a: Pos2, b: Pos2, t: f32) -> Pos2 {
-    let d = ((b.x - a.x).abs() / 2.0).max(40.0);
+    // Forwards, the curve stays between its ends (inside the gap between
+    // two columns); backwards it swings out and round.
+    let d = if b.x > a.x { (b.x - a.x) / 2.0 } else { 40.0 };
     let (p1, p2) = (a + vec2(d, 0.0), b - vec2(d, 0.0));
     let u = 1.0 - t;
     let w = [u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t];
@@ -104,7 +118,10 @@ fn wire_path(a: Pos2, b: Pos2, boxes: &[Rect], lane: usize) -> Vec<Pos2> {
     if !curve.iter().any(blocked) {
         return curve;
     }
-    let off = 4.0 + 3.0 * (lane % 3) as f32;
+    // Lanes spread over the gap beside each column (at least GAP wide),
+    // clear of the port and service marks on the boxes' edges.
+    let gap = gap_beside(a, boxes).min(gap_beside(b, boxes));
+    let off = gap * (0.3 + 0.15 * (lane % 3) as f32);
     let (x1, x2) = (a.x + off, b.x - off);
     let spanned = boxes
         .iter()
@@ -118,6 +135,17 @@ fn wire_path(a: Pos2, b: Pos2, boxes: &[Rect], lane: usize) -> Vec<Pos2> {
         below
     };
     vec![a, pos2(x1, a.y), pos2(x1, y), pos2(x2, y), pos2(x2, b.y), b]
+}
+
+/// The free width beside the box edge at `p` (a service on a right edge
+/// or a port on a left edge), towards the next box, at most [`WIDE_GAP`].
+fn gap_beside(p: Pos2, boxes: &[Rect]) -> f32 {
+    boxes
+        .iter()
+        .filter(|r| (r.left() - p.x).abs() > 1.0 && (r.right() - p.x).abs() > 1.0)
+        .map(|r| (r.left() - p.x).abs().min((r.right() - p.x).abs()))
+        .fold(WIDE_GAP, f32::min)
+        .max(GAP)
 }
 
 /// The point a fraction `t` of the way along `path`, by length.

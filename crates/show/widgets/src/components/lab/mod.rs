@@ -24,7 +24,7 @@ use self::run::LabRun;
 use crate::export::{self, Export};
 use crate::link::{self, Moment};
 use crate::player::{Player, Speed};
-use crate::widget::{LabWidget, Params, SavedRun, control_row, feedback_ui, range};
+use crate::widget::{LabWidget, Params, SavedRun, control_grid, feedback_ui, range};
 
 /// The widget's name in the schema.
 const NAME: &str = "component-lab";
@@ -272,29 +272,38 @@ impl ComponentLab {
     fn sliders(&mut self, ui: &mut egui::Ui) {
         let own = self.own;
         let s = &mut self.settings;
-        control_row(ui, |ui| {
-            own_or(ui, &mut s.latency, own.fixed, "latency", "latency (s)");
-            own_or(ui, &mut s.jitter, own.jitter, "jitter", "jitter (s)");
-            own_or(ui, &mut s.loss, own.loss, "loss", "loss");
-        });
-        control_row(ui, |ui| {
-            if s.task.is_some() || matches!(s.system.as_str(), "newest-vs-timed" | "robot") {
-                ui.add(
-                    egui::Slider::new(&mut s.period, range(NAME, "period"))
-                        .text("push-timed period (s)"),
-                );
-            }
-            if s.task.is_none() && s.system == "newest-vs-timed" {
-                let r = range(NAME, "prescale");
-                let (lo, hi) = (*r.start() as u32, *r.end() as u32);
-                ui.add(egui::Slider::new(&mut s.prescale, lo..=hi).text("prescale"));
-            }
-            ui.add(
-                egui::Slider::new(&mut self.look.window, 0.1..=10.0)
-                    .logarithmic(true)
-                    .text("diagram window (s)"),
-            );
-        });
+        // In a grid, so a row of sliders wraps instead of widening the page.
+        let period = s.task.is_some() || matches!(s.system.as_str(), "newest-vs-timed" | "robot");
+        let prescale = s.task.is_none() && s.system == "newest-vs-timed";
+        let mut shown = vec!["latency", "jitter", "loss"];
+        shown.extend(period.then_some("period"));
+        shown.extend(prescale.then_some("prescale"));
+        shown.push("window");
+        let window = &mut self.look.window;
+        control_grid(
+            ui,
+            "component-lab-sliders",
+            shown.len(),
+            270.0,
+            |ui, i| match shown.get(i).copied() {
+                Some("latency") => own_or(ui, &mut s.latency, own.fixed, "latency", "latency (s)"),
+                Some("jitter") => own_or(ui, &mut s.jitter, own.jitter, "jitter", "jitter (s)"),
+                Some("loss") => own_or(ui, &mut s.loss, own.loss, "loss", "loss"),
+                Some("period") => {
+                    let slider = egui::Slider::new(&mut s.period, range(NAME, "period"));
+                    ui.add(slider.text("push-timed period (s)"));
+                }
+                Some("prescale") => {
+                    let r = range(NAME, "prescale");
+                    let (lo, hi) = (*r.start() as u32, *r.end() as u32);
+                    ui.add(egui::Slider::new(&mut s.prescale, lo..=hi).text("prescale"));
+                }
+                _ => {
+                    let slider = egui::Slider::new(window, 0.1..=10.0).logarithmic(true);
+                    ui.add(slider.text("diagram window (s)"));
+                }
+            },
+        );
     }
 
     /// The player, the diagram at the instant shown, its timeline, the
