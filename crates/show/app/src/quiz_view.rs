@@ -160,10 +160,30 @@ fn answer_controls(
         QuizKind::Sort { bins, items } => {
             state.sorted.resize(items.len(), None);
             ui.label(RichText::new("Put each item in its bin.").italics());
-            // On a phone the item's text goes on its own line, under its bins.
-            let narrow = kinolab_widgets::widget::narrow(ui);
+            // The bins before each item's text, lined up down the list; when
+            // they take most of the row (a phone, many or long bins) the
+            // item's text comes first, its bins under it, and a rule
+            // between items says which bins belong to which.
+            let bins_width: f32 = bins
+                .iter()
+                .map(|bin| {
+                    let font = egui::FontId::proportional(theme::BODY_SIZE);
+                    let text = ui
+                        .painter()
+                        .layout_no_wrap(bin.clone(), font, egui::Color32::WHITE);
+                    text.size().x
+                        + 2.0 * ui.spacing().button_padding.x
+                        + ui.spacing().item_spacing.x
+                })
+                .sum();
+            let stacked = bins_width > 0.55 * ui.available_width();
             for (i, item) in items.iter().enumerate() {
-                // The bins first, so they line up down the list.
+                if stacked {
+                    if i > 0 {
+                        ui.separator();
+                    }
+                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
+                }
                 ui.horizontal_wrapped(|ui| {
                     for (b, bin) in bins.iter().enumerate() {
                         let on = state.sorted[i] == Some(b);
@@ -173,15 +193,11 @@ fn answer_controls(
                             state.verdict = None;
                         }
                     }
-                    ui.add_space(6.0);
-                    if !narrow {
+                    if !stacked {
+                        ui.add_space(6.0);
                         inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
                     }
                 });
-                if narrow {
-                    inline_ui(ui, &item.text, theme::BODY_SIZE, false, navigate);
-                    ui.add_space(4.0);
-                }
             }
             state
                 .sorted
