@@ -586,7 +586,17 @@ pub fn widget_frame(ui: &mut egui::Ui, id: &str, name: &str, slot: &mut WidgetSl
             ui.push_id(id, |ui| match slot {
                 Ok(widget) => {
                     let at = egui::Id::unique(("widget-rect", id));
-                    kinolab_widgets::widget::animated_scope(ui, at, |ui| widget.ui(ui));
+                    let shown = kinolab_widgets::widget::animated_scope(ui, at, |ui| {
+                        ui.scope(|ui| widget.ui(ui))
+                    });
+                    // Its state in words, for a screen reader (built only
+                    // when one listens).
+                    ui.ctx().accesskit_node_builder(shown.response.id, |node| {
+                        if let Some(words) = widget.describe() {
+                            node.set_role(egui::accesskit::Role::Group);
+                            node.set_label(words);
+                        }
+                    });
                 }
                 Err(message) => error_box(ui, &format!("Widget `{name}` cannot be shown"), message),
             });

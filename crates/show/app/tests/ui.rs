@@ -793,3 +793,15 @@ fn a_screen_reader_hears_formulas_in_words() {
     let headings = h.query_all_by_role(egui::accesskit::Role::Heading).count();
     assert!(headings >= 5, "{headings} headings");
 }
+
+#[test]
+fn the_wheel_workbench_says_what_it_shows() {
+    // Its state in words, as a group's name in the accessibility tree: the
+    // wheels, the three degrees and where the ICR is.
+    let h = harness(KinolabApp::new(None, "#/gallery/wheel-workbench"));
+    let node = h.get_by_role(egui::accesskit::Role::Group);
+    let words = node.accesskit_node().label().unwrap_or_default();
+    for part in ["wheel", "Mobility δm", "steerability δs", "maneuverability δM", "ICR"] {
+        assert!(words.contains(part), "{part} missing from: {words}");
+    }
+}

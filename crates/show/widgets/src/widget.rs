@@ -25,6 +25,13 @@ pub trait LabWidget {
         Ok(())
     }
 
+    /// What the widget shows now, in a sentence or two a screen reader can
+    /// read on demand (the wheel workbench: its wheels, degrees and ICR);
+    /// `None` for a widget whose controls say it all.
+    fn describe(&self) -> Option<String> {
+        None
+    }
+
     /// Show the instant `t` seconds into the run (a widget that simulates
     /// runs on as far as it needs to); nothing for a widget that does not.
     fn seek(&mut self, _t: f64) {}

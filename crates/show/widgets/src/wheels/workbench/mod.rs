@@ -207,6 +207,10 @@ impl Workbench {
 }
 
 impl LabWidget for Workbench {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.toolbar(ui);
         let analysis = self.chassis.analyze();

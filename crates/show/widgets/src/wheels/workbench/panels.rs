@@ -113,6 +113,34 @@ impl Workbench {
         });
     }
 
+    /// The wheels, the degrees and the ICR in words.
+    pub(super) fn description(&self) -> String {
+        let a = self.chassis.analyze();
+        let wheels = self.chassis.wheels();
+        let mut kinds: Vec<String> = Vec::new();
+        for w in wheels {
+            let name = w.kind.name().to_owned();
+            if !kinds.contains(&name) {
+                kinds.push(name);
+            }
+        }
+        format!(
+            "{} wheel{} ({}). Mobility δm {}, steerability δs {}, maneuverability δM {}; {}. {}",
+            wheels.len(),
+            if wheels.len() == 1 { "" } else { "s" },
+            kinds.join(", "),
+            a.mobility,
+            a.steerability,
+            a.maneuverability,
+            if a.holonomic {
+                "holonomic"
+            } else {
+                "not holonomic"
+            },
+            icr_text(&a)
+        )
+    }
+
     pub(super) fn degrees_panel(&self, ui: &mut egui::Ui, a: &Analysis) {
         let strong = |ui: &mut egui::Ui, s: String| {
             ui.label(RichText::new(s).strong());
@@ -154,23 +182,7 @@ impl Workbench {
                 );
                 ui.end_row();
             });
-        let pair = |p: [f64; 2]| format!("({}, {})", fixed(p[0], 2), fixed(p[1], 2));
-        let icr = match a.icr {
-            Icr::Anywhere => "ICR: anywhere (no standard wheel objects).".to_owned(),
-            Icr::Line { point, direction } => format!(
-                "ICR: on the line through {} along {}.",
-                pair(point),
-                pair(direction)
-            ),
-            Icr::Point { x, y } => format!("ICR: at {} in the robot frame.", pair([x, y])),
-            Icr::Infinity { direction } => format!(
-                "ICR: at infinity. The robot can only translate, along {}.",
-                pair(direction)
-            ),
-            Icr::None => {
-                "ICR: none. The zero-motion lines share no point: the robot cannot move.".to_owned()
-            }
-        };
+        let icr = icr_text(a);
         ui.label(RichText::new(icr).color(theme::accent(ui)));
     }
 
@@ -368,5 +380,26 @@ fn kind_fields(ui: &mut egui::Ui, edited: &mut Wheel) {
             ui.end_row();
         }
         _ => {}
+    }
+}
+
+/// Where the instantaneous centre of rotation is, as a sentence.
+fn icr_text(a: &Analysis) -> String {
+    let pair = |p: [f64; 2]| format!("({}, {})", fixed(p[0], 2), fixed(p[1], 2));
+    match a.icr {
+        Icr::Anywhere => "ICR: anywhere (no standard wheel objects).".to_owned(),
+        Icr::Line { point, direction } => format!(
+            "ICR: on the line through {} along {}.",
+            pair(point),
+            pair(direction)
+        ),
+        Icr::Point { x, y } => format!("ICR: at {} in the robot frame.", pair([x, y])),
+        Icr::Infinity { direction } => format!(
+            "ICR: at infinity. The robot can only translate, along {}.",
+            pair(direction)
+        ),
+        Icr::None => {
+            "ICR: none. The zero-motion lines share no point: the robot cannot move.".to_owned()
+        }
     }
 }
