@@ -801,7 +801,37 @@ fn the_wheel_workbench_says_what_it_shows() {
     let h = harness(KinolabApp::new(None, "#/gallery/wheel-workbench"));
     let node = h.get_by_role(egui::accesskit::Role::Group);
     let words = node.accesskit_node().label().unwrap_or_default();
-    for part in ["wheel", "Mobility δm", "steerability δs", "maneuverability δM", "ICR"] {
+    for part in [
+        "wheel",
+        "Mobility δm",
+        "steerability δs",
+        "maneuverability δM",
+        "ICR",
+    ] {
         assert!(words.contains(part), "{part} missing from: {words}");
+    }
+}
+
+#[test]
+fn the_arena_and_the_gait_studio_say_what_they_show() {
+    for (address, parts) in [
+        (
+            "gallery/behaviour-arena",
+            &["coordination", "s into the run", "has control", "touch"][..],
+        ),
+        (
+            "gallery/gait-studio",
+            &["% of the cycle", "stability margin", "smallest"][..],
+        ),
+    ] {
+        let h = harness(KinolabApp::new(None, &format!("#/{address}")));
+        let node = h.get_by_role(egui::accesskit::Role::Group);
+        let words = node.accesskit_node().label().unwrap_or_default();
+        for part in parts {
+            assert!(
+                words.contains(part),
+                "{address}: {part} missing from: {words}"
+            );
+        }
     }
 }

@@ -561,6 +561,23 @@ fn verdict(gait: &Gait, curve: &[Instant]) -> (bool, String) {
 }
 
 impl LabWidget for GaitStudio {
+    /// The margin at the instant shown, then the verdict on the cycle.
+    fn describe(&self) -> Option<String> {
+        let gait = self.gait.as_ref()?;
+        let now = self
+            .curve
+            .get(self.player.cursor().min(self.curve.len().saturating_sub(1)))?;
+        let margin = now.margin.map_or(
+            "no support polygon (fewer than three feet down)".to_owned(),
+            |m| format!("stability margin {} cm", fixed(m * 100.0, 1)),
+        );
+        Some(format!(
+            "At {}% of the cycle: {margin}. {}",
+            fixed(now.tau * 100.0, 0),
+            verdict(gait, &self.curve).1
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         let Some(gait) = self.gait.clone() else {
             self.settings = self.initial.clone();

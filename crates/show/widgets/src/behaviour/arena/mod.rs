@@ -324,6 +324,27 @@ impl Arena {
             .unwrap_or_default()
     }
 
+    /// Who drives at the instant shown, and how the run has gone so far.
+    fn description(&self) -> Option<String> {
+        let player = self.player.as_ref()?;
+        let shown = player.ticks_shown();
+        let names = self.names();
+        let driver = shown
+            .last()
+            .and_then(|t| t.in_control)
+            .and_then(|i| names.get(i))
+            .map_or("no behaviour".to_owned(), Clone::clone);
+        let touches = shown.iter().filter(|t| t.bump()).count();
+        let goal = shown.iter().any(Tick::goal);
+        Some(format!(
+            "{} coordination, {} s into the run: {driver} has control; {touches} touch{} so far{}.",
+            self.settings.coordinator.name(),
+            kinolab_common::display::fixed(player.time(), 1),
+            if touches == 1 { "" } else { "es" },
+            if goal { ", goal reached" } else { "" }
+        ))
+    }
+
     fn names(&self) -> Vec<String> {
         self.setup
             .as_ref()
@@ -333,6 +354,10 @@ impl Arena {
 }
 
 impl LabWidget for Arena {
+    fn describe(&self) -> Option<String> {
+        self.description()
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         if let Some(problem) = &self.problem {
