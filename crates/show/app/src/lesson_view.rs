@@ -417,9 +417,6 @@ fn table_ui(
     });
 }
 
-/// Share `usable` points among columns in proportion to `weights`, none
-/// narrower than its `least`; when even the least widths do not fit, the
-/// columns get exactly those (and the table scrolls).
 /// Inline code up to this many characters is kept on one line.
 const SHORT_CODE: usize = 24;
 
@@ -453,6 +450,9 @@ fn widest_atom(ui: &egui::Ui, cell: &Inline, size: f32) -> f32 {
         .fold(0.0f32, f32::max)
 }
 
+/// Share `usable` points among columns in proportion to `weights`, none
+/// narrower than its `least`; when even the least widths do not fit, the
+/// columns get exactly those (and the table scrolls).
 pub fn column_widths(weights: &[f32], least: &[f32], usable: f32) -> Vec<f32> {
     let mut widths: Vec<f32> = least.to_vec();
     let mut free: Vec<usize> = (0..weights.len()).collect();

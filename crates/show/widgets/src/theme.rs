@@ -177,6 +177,7 @@ fn readable_text(ctx: &egui::Context) {
     });
     ctx.style_mut_of(egui::Theme::Light, |style| {
         style.visuals.hyperlink_color = rgb(30, 100, 200);
+        style.visuals.weak_text_color = Some(Color32::from_gray(100));
     });
 }
 
@@ -203,8 +204,22 @@ fn outline_controls(ctx: &egui::Context) {
     }
 }
 
-/// The contrast ratio of two colours, 1 to 21 (WCAG 2's definition).
+/// `top` (premultiplied, as egui keeps colours) blended over an opaque
+/// `bottom`.
+fn over(top: Color32, bottom: Color32) -> Color32 {
+    let keep = 1.0 - f32::from(top.a()) / 255.0;
+    let mix = |t: u8, b: u8| (f32::from(t) + f32::from(b) * keep).round().min(255.0) as u8;
+    Color32::from_rgb(
+        mix(top.r(), bottom.r()),
+        mix(top.g(), bottom.g()),
+        mix(top.b(), bottom.b()),
+    )
+}
+
+/// The contrast ratio of `a` drawn over `b`, 1 to 21 (WCAG 2's
+/// definition); a translucent `a` is first blended over `b`.
 pub fn contrast(a: Color32, b: Color32) -> f32 {
+    let a = over(a, b);
     fn channel(c: u8) -> f32 {
         let c = f32::from(c) / 255.0;
         if c <= 0.04045 {

@@ -341,8 +341,12 @@ pub fn sideways<R>(ui: &mut egui::Ui, add: impl FnOnce(&mut egui::Ui) -> R) -> R
     if hidden_left || hidden_right {
         let over = out.content_size.x - out.inner_rect.width();
         ui.ctx().data_mut(|d| {
-            d.get_temp_mut_or_default::<Vec<f32>>(overflow_id())
-                .push(over)
+            // Kept for a check (see `take_scrolled_sideways`); bounded, as
+            // nothing takes it in the lab.
+            let seen = d.get_temp_mut_or_default::<Vec<f32>>(overflow_id());
+            if seen.len() < 64 {
+                seen.push(over);
+            }
         });
     }
     let panel = ui.visuals().panel_fill;

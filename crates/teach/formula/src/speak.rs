@@ -46,46 +46,85 @@ fn word(out: &mut String, w: &str) {
     out.push_str(w);
 }
 
-/// Whether `math` is read as a single word (a letter, a number), so it
-/// needs no spoken brackets around it.
-fn short(math: &Math) -> bool {
-    spoken(math).split_whitespace().count() <= 1
+/// The words of `math` alone, each subtree spoken once (a formula nested
+/// deep is read in time linear in its size times its depth).
+fn words_of(math: &Math) -> String {
+    let mut words = String::new();
+    say(math, &mut words);
+    words
 }
 
-/// `math` as a group: its words alone when short, else between `open` and
-/// `close`.
-fn grouped(math: &Math, open: &str, close: &str, out: &mut String) {
-    if short(math) {
-        say(math, out);
+fn one_word(words: &str) -> bool {
+    words.split_whitespace().count() <= 1
+}
+
+/// Already spoken `words` as a group: alone when one word, else between
+/// `open` and `close`.
+fn group_words(words: &str, open: &str, close: &str, out: &mut String) {
+    if one_word(words) {
+        out.push_str(words);
     } else {
         word(out, open);
-        say(math, out);
+        out.push_str(words);
         word(out, close);
     }
 }
 
+/// `math` as a group (see [`group_words`]).
+fn grouped(math: &Math, open: &str, close: &str, out: &mut String) {
+    group_words(&words_of(math), open, close, out);
+}
+
 fn fraction(num: &Math, den: &Math, out: &mut String) {
-    if short(num) && short(den) {
-        say(num, out);
-        word(out, "over");
-        say(den, out);
-    } else {
+    let (num, den) = (words_of(num), words_of(den));
+    let simple = one_word(&num) && one_word(&den);
+    if !simple {
         word(out, "the fraction");
-        say(num, out);
-        word(out, "over");
-        say(den, out);
+    }
+    out.push_str(&num);
+    word(out, "over");
+    out.push_str(&den);
+    if !simple {
         word(out, "end fraction");
     }
 }
 
 fn scripts(base: &Math, sub: Option<&Math>, sup: Option<&Math>, out: &mut String) {
     say(base, out);
-    if let Some(sub) = sub {
-        word(out, "sub");
-        grouped(sub, "", "end sub", out);
+    let sub = sub.map(words_of);
+    let sup = sup.map(words_of);
+    // A sum or an integral with limits: "the sum over i of", "the
+    // integral from 0 to T of".
+    if matches!(
+        base,
+        Math::Op {
+            kind: OpKind::Large,
+            ..
+        }
+    ) {
+        match (&sub, &sup) {
+            (Some(from), Some(to)) => {
+                word(out, "from");
+                out.push_str(from);
+                word(out, "to");
+                out.push_str(to);
+            }
+            (Some(over), None) | (None, Some(over)) => {
+                word(out, "over");
+                out.push_str(over);
+            }
+            (None, None) => {}
+        }
+        word(out, "of");
+        return;
     }
-    if let Some(sup) = sup {
-        match spoken(sup).as_str() {
+    if let Some(sub) = &sub {
+        word(out, "sub");
+        group_words(sub, "", "end sub", out);
+    }
+    if let Some(sup) = &sup {
+        let plain = sup.split_whitespace().collect::<Vec<_>>().join(" ");
+        match plain.as_str() {
             "2" => word(out, "squared"),
             "3" => word(out, "cubed"),
             "T" => word(out, "transposed"),
@@ -93,7 +132,7 @@ fn scripts(base: &Math, sub: Option<&Math>, sup: Option<&Math>, out: &mut String
             "prime" => word(out, "prime"),
             _ => {
                 word(out, "to the power");
-                grouped(sup, "", "end power", out);
+                group_words(sup, "", "end power", out);
             }
         }
     }
@@ -315,6 +354,26 @@ mod tests {
         ] {
             assert_eq!(read(tex), words, "{tex}");
         }
+    }
+
+    #[test]
+    fn sums_and_integrals_read_their_limits() {
+        assert_eq!(
+            read("\\sum_i m_i g d_i"),
+            "the sum over i of m sub i g d sub i"
+        );
+        assert_eq!(read("\\int_0^T v"), "the integral from 0 to T of v");
+    }
+
+    #[test]
+    fn a_formula_nested_deep_is_read_in_time() {
+        // Sixty nested roots and dots: each level is spoken once, not
+        // twice per level (which would take 2^60 steps).
+        let roots = format!("{}x{}", "\\sqrt{".repeat(60), "}".repeat(60));
+        let words = read(&roots);
+        assert_eq!(words.matches("the square root of").count(), 60);
+        let dots = format!("{}x", "\\dot ".repeat(60));
+        assert_eq!(read(&dots).matches("dot").count(), 60);
     }
 
     #[test]

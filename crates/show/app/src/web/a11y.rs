@@ -119,9 +119,11 @@ impl egui::Plugin for Plugin {
         });
     }
 
-    fn output_hook(&mut self, _ctx: &egui::Context, output: &mut egui::FullOutput) {
+    fn output_hook(&mut self, ctx: &egui::Context, output: &mut egui::FullOutput) {
         if let Some(update) = output.platform_output.accesskit_update.take() {
-            MIRROR.with_borrow_mut(|m| m.apply(update));
+            // egui's bounds are in points; a point is `zoom` CSS pixels.
+            let zoom = f64::from(ctx.zoom_factor());
+            MIRROR.with_borrow_mut(|m| m.apply(update, zoom));
         }
     }
 }
@@ -139,14 +141,25 @@ fn switched_on() {
 
 impl Mirror {
     /// Bring the page's elements in line with egui's whole tree.
-    fn apply(&mut self, update: TreeUpdate) {
+    fn apply(&mut self, update: TreeUpdate, zoom: f64) {
         let Some(document) = super::window().and_then(|w| w.document()) else {
             return;
         };
         let Some(container) = document.get_element_by_id(CONTAINER) else {
             return;
         };
-        let present: HashSet<NodeId> = update.nodes.iter().map(|(id, _)| *id).collect();
+        // The row-by-row text runs inside a label repeat its text: the
+        // label's element already holds it.
+        let nodes: Vec<(NodeId, Node)> = update
+            .nodes
+            .into_iter()
+            .filter(|(_, n)| n.role() != Role::TextRun)
+            .collect();
+        let present: HashSet<NodeId> = nodes.iter().map(|(id, _)| *id).collect();
+        let parent_of: HashMap<NodeId, NodeId> = nodes
+            .iter()
+            .flat_map(|(id, n)| n.children().iter().map(move |c| (*c, *id)))
+            .collect();
         self.elements.retain(|id, (element, _)| {
             let keep = present.contains(id);
             if !keep {
@@ -155,17 +168,21 @@ impl Mirror {
             keep
         });
         let mut reorder = Vec::new();
-        for (id, node) in update.nodes {
+        for (id, node) in nodes {
             if let Some((_, old)) = self.elements.get(&id)
                 && *old == node
             {
                 continue;
             }
-            let Some(element) = self.element(&document, id, node.role()) else {
+            let Some((element, fresh)) = self.element(&document, id, node.role()) else {
                 continue;
             };
-            describe(&element, id, &node);
+            describe(&element, id, &node, zoom);
             reorder.push(id);
+            // A new element goes where its parent keeps its children.
+            if fresh && let Some(parent) = parent_of.get(&id) {
+                reorder.push(*parent);
+            }
             self.elements.insert(id, (element, node));
         }
         // Children in reading order, under their parent.
@@ -199,23 +216,24 @@ impl Mirror {
         }
     }
 
-    /// The element for node `id`, made anew when its role needs another tag.
+    /// The element for node `id`, and whether it is new: made anew when
+    /// its role needs another tag.
     fn element(
         &mut self,
         document: &web_sys::Document,
         id: NodeId,
         role: Role,
-    ) -> Option<web_sys::Element> {
+    ) -> Option<(web_sys::Element, bool)> {
         let tag = tag(role);
         if let Some((element, _)) = self.elements.get(&id)
             && element.tag_name().eq_ignore_ascii_case(tag)
         {
-            return Some(element.clone());
+            return Some((element.clone(), false));
         }
         if let Some((old, _)) = self.elements.remove(&id) {
             old.remove();
         }
-        document.create_element(tag).ok()
+        document.create_element(tag).ok().map(|e| (e, true))
     }
 }
 
@@ -228,7 +246,7 @@ fn tag(role: Role) -> &'static str {
 }
 
 /// Write `node`'s role, name, value, state and place on `element`.
-fn describe(element: &web_sys::Element, id: NodeId, node: &Node) {
+fn describe(element: &web_sys::Element, id: NodeId, node: &Node, zoom: f64) {
     let set = |name: &str, value: Option<String>| {
         let _ = match value {
             Some(v) => element.set_attribute(name, &v),
@@ -284,10 +302,10 @@ fn describe(element: &web_sys::Element, id: NodeId, node: &Node) {
     let place = node.bounds().map(|b| {
         format!(
             "left:{:.0}px;top:{:.0}px;width:{:.0}px;height:{:.0}px",
-            b.x0,
-            b.y0,
-            (b.x1 - b.x0).max(1.0),
-            (b.y1 - b.y0).max(1.0)
+            b.x0 * zoom,
+            b.y0 * zoom,
+            ((b.x1 - b.x0) * zoom).max(1.0),
+            ((b.y1 - b.y0) * zoom).max(1.0)
         )
     });
     set("style", place);

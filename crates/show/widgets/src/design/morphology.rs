@@ -164,6 +164,7 @@ impl Morphology {
         let chosen = [self.settings.from, self.settings.to(model)];
         // Names clear of the dots, the pairs' lines and the ports' squares.
         let mut labels = Labels::default();
+        labels.within(rect);
         for b in 0..n {
             labels.reserve(egui::Rect::from_center_size(at(b), vec2(10.0, 10.0)));
         }

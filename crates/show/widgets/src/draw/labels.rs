@@ -54,6 +54,8 @@ pub struct Labels {
     taken: Vec<Rect>,
     lines: Vec<[Pos2; 2]>,
     pending: Vec<Pending>,
+    /// The canvas the labels must stay inside, if any.
+    bounds: Option<Rect>,
 }
 
 /// Where a label may go, relative to its anchor: the four diagonals first
@@ -155,6 +157,13 @@ fn segment_hits(rect: Rect, a: Pos2, b: Pos2) -> bool {
 }
 
 impl Labels {
+    /// Keep every label inside `canvas` (a label half outside it would be
+    /// cut off). The canvas, not the painter's clip: that shrinks while the
+    /// page scrolls, and labels would jump.
+    pub fn within(&mut self, canvas: Rect) {
+        self.bounds = Some(canvas);
+    }
+
     /// Keep `rect` free of labels (a handle, a marker).
     pub fn reserve(&mut self, rect: Rect) {
         self.taken.push(rect);
@@ -199,12 +208,10 @@ impl Labels {
         let mut placed = Vec::with_capacity(self.pending.len());
         for p in std::mem::take(&mut self.pending) {
             let laid = lay_out(painter, p.text, font, p.color);
-            // Inside the canvas the painter is clipped to: a label half
-            // outside it would be cut off.
             let obstacles = Obstacles {
                 rects: &self.taken,
                 lines: &self.lines,
-                bounds: Some(painter.clip_rect()),
+                bounds: self.bounds,
             };
             let pref = Preference {
                 toward: p.toward,

@@ -208,6 +208,7 @@ impl ZmpCartTable {
         // Marks on the ground, their names below it, clear of each other,
         // of the ground line and of the foot.
         let mut labels = Labels::default();
+        labels.within(rect);
         labels.avoid_line(ground[0], ground[1]);
         labels.reserve(foot);
         let mut mark = |at: f64, color: Color32, text: &str| {

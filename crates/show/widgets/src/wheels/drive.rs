@@ -315,6 +315,25 @@ impl Drive {
         if !(floor.hovered() || floor.has_focus()) || self.settings.mode != Mode::Twist {
             return;
         }
+        // A held drive key is attention, even when the speed it pushes is
+        // already at its limit and nothing changes.
+        let driving = ui.input(|i| {
+            [
+                Key::ArrowUp,
+                Key::ArrowDown,
+                Key::ArrowLeft,
+                Key::ArrowRight,
+                Key::Q,
+                Key::E,
+            ]
+            .into_iter()
+            .any(|k| i.key_down(k))
+        });
+        if driving {
+            // It wakes a drive that paused itself, not one the learner paused.
+            self.running |= self.unattended > REST_AFTER;
+            self.unattended = 0.0;
+        }
         let s = &mut self.settings;
         ui.input(|i| {
             let step = 0.02;

@@ -126,8 +126,11 @@ fn wire_path(a: Pos2, b: Pos2, boxes: &[Rect], lane: usize) -> Vec<Pos2> {
     let spanned = boxes
         .iter()
         .filter(|r| r.right() >= x1.min(x2) && r.left() <= x1.max(x2));
-    let above = spanned.clone().map(Rect::top).fold(f32::INFINITY, f32::min) - off;
-    let below = spanned.map(Rect::bottom).fold(f32::NEG_INFINITY, f32::max) + off;
+    // Above or below the boxes the margin is only GAP high: the lanes
+    // there stay inside it, on the canvas.
+    let v = GAP * (0.3 + 0.15 * (lane % 3) as f32);
+    let above = spanned.clone().map(Rect::top).fold(f32::INFINITY, f32::min) - v;
+    let below = spanned.map(Rect::bottom).fold(f32::NEG_INFINITY, f32::max) + v;
     let climb = |y: f32| (a.y - y).abs() + (b.y - y).abs();
     let y = if climb(above) <= climb(below) {
         above
