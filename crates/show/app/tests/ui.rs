@@ -835,3 +835,14 @@ fn the_arena_and_the_gait_studio_say_what_they_show() {
         }
     }
 }
+
+#[test]
+fn the_field_sandbox_says_what_it_shows() {
+    // Its pieces, traps and saddles, and where the point robot ends.
+    let h = harness(KinolabApp::new(None, "#/gallery/field-sandbox"));
+    let node = h.get_by_role(egui::accesskit::Role::Group);
+    let words = node.accesskit_node().label().unwrap_or_default();
+    for part in ["A field of", "trap", "saddle", "Point robot:"] {
+        assert!(words.contains(part), "{part} missing from: {words}");
+    }
+}

@@ -290,6 +290,10 @@ impl Sandbox {
 }
 
 impl LabWidget for Sandbox {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         if let Some(player) = &mut self.player {
             player.controls(ui);

@@ -126,13 +126,44 @@ impl Sandbox {
         }
     }
 
-    fn findings_ui(&self, ui: &mut egui::Ui) {
+    /// How many traps and saddles the field has.
+    fn census(&self) -> (usize, usize) {
         let eq = &self.analysis.equilibria;
         let traps = eq
             .iter()
             .filter(|e| e.kind == Equilibrium::Stable && !self.is_goal([e.x, e.y]))
             .count();
         let saddles = eq.iter().filter(|e| e.kind == Equilibrium::Saddle).count();
+        (traps, saddles)
+    }
+
+    /// The field's pieces, traps and saddles, and the point robot's
+    /// descent, in words.
+    pub(super) fn description(&self) -> String {
+        let (traps, saddles) = self.census();
+        let mut text = format!(
+            "A field of {} piece{}: {traps} trap{} and {saddles} saddle{}.",
+            self.design.pieces.len(),
+            if self.design.pieces.len() == 1 {
+                ""
+            } else {
+                "s"
+            },
+            if traps == 1 { "" } else { "s" },
+            if saddles == 1 { "" } else { "s" },
+        );
+        if let Some(d) = &self.descent {
+            text += &format!(
+                " Point robot: {}.",
+                outcome_text(d, &self.analysis.equilibria)
+            );
+        }
+        text
+    }
+
+    fn findings_ui(&self, ui: &mut egui::Ui) {
+        let eq = &self.analysis.equilibria;
+        let (traps, saddles) = self.census();
         ui.label(format!(
             "Traps (stable, not the goal): {traps} · saddles: {saddles}"
         ));
