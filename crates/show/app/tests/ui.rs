@@ -14,9 +14,20 @@ fn harness(app: KinolabApp) -> Harness<'static, KinolabApp> {
 
 /// For pages with a running animation: the caller steps frames itself.
 fn animated(app: KinolabApp) -> Harness<'static, KinolabApp> {
-    Harness::builder()
-        .with_size(egui::vec2(1280.0, 16000.0))
-        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app)
+    lab(app, tall(1280.0))
+}
+
+/// A window `width` wide and tall enough for any page.
+fn tall(width: f32) -> egui_kittest::HarnessBuilder<KinolabApp> {
+    Harness::builder().with_size(egui::vec2(width, 16000.0))
+}
+
+/// The lab in the window `builder` describes.
+fn lab(
+    app: KinolabApp,
+    builder: egui_kittest::HarnessBuilder<KinolabApp>,
+) -> Harness<'static, KinolabApp> {
+    builder.build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app)
 }
 
 const LESSON: &str = "automation/open-and-closed-worlds";
@@ -233,9 +244,7 @@ fn every_page_fits_the_window_on_a_phone_and_a_desktop() {
     for width in WIDTHS {
         let app = KinolabApp::new(None, "");
         let addresses = app.course().unwrap().addresses();
-        let mut h = Harness::builder()
-            .with_size(egui::vec2(width, 16000.0))
-            .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+        let mut h = lab(app, tall(width));
         let widgets = kinolab_schema::widgets().map(|w| format!("gallery/{}", w.name));
         for address in widgets.chain(addresses) {
             h.state_mut().follow_hash(&format!("#/{address}"));
@@ -270,9 +279,7 @@ const SOLVED: &str = "Solved";
 fn no_task_in_a_lesson_is_solved_before_the_learner_changes_anything() {
     let app = KinolabApp::new(None, "");
     let addresses = app.course().unwrap().addresses();
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1024.0, 16000.0))
-        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let mut h = lab(app, tall(1024.0));
     let mut solved = Vec::new();
     let mut tasks = 0;
     for address in addresses {
@@ -740,10 +747,7 @@ fn a_page_at_rest_asks_for_no_frames() {
     // nothing changes, except a wheel drive still driving (next test).
     let app = KinolabApp::new(None, "");
     let addresses = app.course().unwrap().addresses();
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 16000.0))
-        .with_max_steps(30)
-        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let mut h = lab(app, tall(1280.0).with_max_steps(30));
     let widgets = kinolab_schema::widgets().map(|w| format!("gallery/{}", w.name));
     let mut busy = Vec::new();
     for address in widgets.chain(addresses) {
@@ -760,11 +764,8 @@ fn a_page_at_rest_asks_for_no_frames() {
 #[test]
 fn a_wheel_drive_left_alone_pauses_itself() {
     let app = KinolabApp::new(None, "");
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 1600.0))
-        .with_step_dt(0.05)
-        .with_max_steps(700)
-        .build_ui_state(|ui, app: &mut KinolabApp| app.show(ui), app);
+    let builder = Harness::builder().with_size(egui::vec2(1280.0, 1600.0));
+    let mut h = lab(app, builder.with_step_dt(0.05).with_max_steps(700));
     h.state_mut().follow_hash("#/gallery/wheel-drive");
     let steps = h.run_ok().expect("the drive rests within 35 s");
     assert!(steps >= 590, "it drove for 30 s first, {steps} steps");

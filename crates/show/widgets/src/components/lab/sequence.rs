@@ -16,128 +16,180 @@ const LABELLED: usize = 24;
 
 /// The diagram of `rt`'s last `window` seconds; where it was drawn.
 pub fn show(ui: &mut egui::Ui, rt: &Runtime, window: f64) -> egui::Rect {
-    let names: Vec<String> = rt.view().into_iter().map(|c| c.name).collect();
     let width = ui.available_width();
     let (response, painter) = canvas(ui, vec2(width, 280.0), Sense::hover());
-    let rect = response.rect;
-    let ink = ui.visuals().text_color();
-    let faint = ui.visuals().weak_text_color();
-    let left = rect.left() + 50.0;
-    let step = (rect.width() - 60.0) / names.len().max(1) as f32;
-    let x_of = |name: &str| {
-        names
+    let now = rt.now();
+    let frame = Frame {
+        rect: response.rect,
+        names: rt.view().into_iter().map(|c| c.name).collect(),
+        from: now - window,
+        now,
+    };
+    let ink = Ink {
+        text: ui.visuals().text_color(),
+        faint: ui.visuals().weak_text_color(),
+        lost: theme::error_color(ui),
+    };
+    frame.lifelines(&painter, &ink);
+    frame.messages(&painter, rt, &ink);
+    frame.rect
+}
+
+/// Where things go: a lifeline per component across, time running down.
+struct Frame {
+    rect: egui::Rect,
+    names: Vec<String>,
+    /// The window shown, s.
+    from: f64,
+    now: f64,
+}
+
+struct Ink {
+    text: Color32,
+    faint: Color32,
+    lost: Color32,
+}
+
+impl Frame {
+    fn top(&self) -> f32 {
+        self.rect.top() + 24.0
+    }
+
+    fn bottom(&self) -> f32 {
+        self.rect.bottom() - 8.0
+    }
+
+    /// A component's lifeline (the left margin for one not shown).
+    fn x_of(&self, name: &str) -> f32 {
+        let step = (self.rect.width() - 60.0) / self.names.len().max(1) as f32;
+        self.names
             .iter()
             .position(|n| n == name)
-            .map_or(rect.left() + 14.0, |i| left + step * (i as f32 + 0.5))
-    };
-    let (top, bottom) = (rect.top() + 24.0, rect.bottom() - 8.0);
-    let now = rt.now();
-    let from = now - window;
-    let y_of = |t: f64| top + ((t - from) / window).clamp(0.0, 1.0) as f32 * (bottom - top);
-    for name in &names {
-        let x = x_of(name);
-        painter.line_segment([pos2(x, top), pos2(x, bottom)], Stroke::new(1.0, faint));
+            .map_or(self.rect.left() + 14.0, |i| {
+                self.rect.left() + 50.0 + step * (i as f32 + 0.5)
+            })
+    }
+
+    fn y_of(&self, t: f64) -> f32 {
+        let share = ((t - self.from) / (self.now - self.from)).clamp(0.0, 1.0) as f32;
+        self.top() + share * (self.bottom() - self.top())
+    }
+
+    /// The lifelines with their names, and the window's two times.
+    fn lifelines(&self, painter: &egui::Painter, ink: &Ink) {
+        let (top, bottom) = (self.top(), self.bottom());
+        for name in &self.names {
+            let x = self.x_of(name);
+            painter.line_segment([pos2(x, top), pos2(x, bottom)], Stroke::new(1.0, ink.faint));
+            painter.text(
+                pos2(x, self.rect.top() + 4.0),
+                Align2::CENTER_TOP,
+                name,
+                FontId::proportional(theme::SMALL_SIZE),
+                ink.text,
+            );
+        }
+        let left = self.rect.left() + 4.0;
+        let tiny = FontId::proportional(theme::TINY_SIZE);
+        let from = format!("{:.2} s", self.from.max(0.0));
         painter.text(
-            pos2(x, rect.top() + 4.0),
-            Align2::CENTER_TOP,
-            name,
-            FontId::proportional(theme::SMALL_SIZE),
-            ink,
+            pos2(left, top),
+            Align2::LEFT_TOP,
+            from,
+            tiny.clone(),
+            ink.faint,
+        );
+        let now = format!("{:.2} s", self.now);
+        painter.text(
+            pos2(left, bottom),
+            Align2::LEFT_BOTTOM,
+            now,
+            tiny,
+            ink.faint,
         );
     }
-    painter.text(
-        pos2(rect.left() + 4.0, top),
-        Align2::LEFT_TOP,
-        format!("{:.2} s", from.max(0.0)),
-        FontId::proportional(theme::TINY_SIZE),
-        faint,
-    );
-    painter.text(
-        pos2(rect.left() + 4.0, bottom),
-        Align2::LEFT_BOTTOM,
-        format!("{now:.2} s"),
-        FontId::proportional(theme::TINY_SIZE),
-        faint,
-    );
-    let trace = rt.trace();
-    let start = trace.partition_point(|r| r.sent < from - 1.0);
-    let shown: Vec<_> = trace[start..]
-        .iter()
-        .filter(|r| r.sent <= now && r.delivered.unwrap_or(now) >= from)
-        .collect();
-    let label = shown.len() <= LABELLED;
-    // Labels at least a line apart, so they never pile up.
-    let mut last_label = f32::NEG_INFINITY;
-    let mut room = |y: f32| {
-        let free = label && y - last_label >= theme::SMALL_SIZE + 2.0;
-        if free {
-            last_label = y;
-        }
-        free
-    };
-    for r in shown {
-        let color = theme::pattern_color(r.pattern);
-        let (a, y0) = (x_of(&r.from), y_of(r.sent));
-        match r.pattern {
-            "note" | "state" => {
+
+    /// Every message of the window: an arrow (a cross where a lost one
+    /// vanished), notes as dots, labels while there are few.
+    fn messages(&self, painter: &egui::Painter, rt: &Runtime, ink: &Ink) {
+        let (from, now) = (self.from, self.now);
+        let trace = rt.trace();
+        let start = trace.partition_point(|r| r.sent < from - 1.0);
+        let shown: Vec<_> = trace[start..]
+            .iter()
+            .filter(|r| r.sent <= now && r.delivered.unwrap_or(now) >= from)
+            .collect();
+        let label = shown.len() <= LABELLED;
+        // Labels at least a line apart, so they never pile up.
+        let mut last_label = f32::NEG_INFINITY;
+        let mut room = |y: f32| {
+            let free = label && y - last_label >= theme::SMALL_SIZE + 2.0;
+            if free {
+                last_label = y;
+            }
+            free
+        };
+        let small = FontId::proportional(theme::SMALL_SIZE);
+        for r in shown {
+            let (a, y0) = (self.x_of(&r.from), self.y_of(r.sent));
+            if matches!(r.pattern, "note" | "state") {
                 if r.sent >= from && !(r.pattern == "state" && r.summary == "running") {
                     let at = pos2(a, y0);
-                    painter.circle_filled(at, 3.0, faint);
+                    painter.circle_filled(at, 3.0, ink.faint);
                     if room(y0) {
+                        let text = r.summary.clone();
+                        let at = at + vec2(5.0, 0.0);
                         text_on_canvas(
-                            &painter,
-                            at + vec2(5.0, 0.0),
+                            painter,
+                            at,
                             Align2::LEFT_CENTER,
-                            r.summary.clone(),
-                            FontId::proportional(theme::SMALL_SIZE),
-                            faint,
+                            text,
+                            small.clone(),
+                            ink.faint,
                         );
                     }
                 }
                 continue;
             }
-            _ => {}
-        }
-        let b = x_of(&r.to);
-        let end = match (r.status, r.delivered) {
-            (_, Some(d)) => Some(d.min(now)),
-            (Status::InFlight, None) => Some(now),
-            _ => None,
-        };
-        match end {
-            Some(d) => arrow(
-                &painter,
-                pos2(a, y0),
-                pos2(b, y_of(d)),
-                color,
-                r.status == Status::Skipped,
-            ),
-            None => {
-                let mid = pos2((a + b) / 2.0, y0 + 6.0);
-                painter.line_segment([pos2(a, y0), mid], Stroke::new(1.5, color));
-                marks::cross(&painter, mid, 4.0, Stroke::new(2.0, theme::error_color(ui)));
+            let color = theme::pattern_color(r.pattern);
+            let b = self.x_of(&r.to);
+            let end = match (r.status, r.delivered) {
+                (_, Some(d)) => Some(d.min(now)),
+                (Status::InFlight, None) => Some(now),
+                _ => None,
+            };
+            match end {
+                Some(d) => {
+                    let faded = r.status == Status::Skipped;
+                    arrow(painter, pos2(a, y0), pos2(b, self.y_of(d)), color, faded);
+                }
+                None => {
+                    let mid = pos2((a + b) / 2.0, y0 + 6.0);
+                    painter.line_segment([pos2(a, y0), mid], Stroke::new(1.5, color));
+                    marks::cross(painter, mid, 4.0, Stroke::new(2.0, ink.lost));
+                }
+            }
+            if room(y0) {
+                let skipped = if r.status == Status::Skipped {
+                    " (skipped)"
+                } else {
+                    ""
+                };
+                // On the canvas's colour: a label between lifelines further
+                // apart than their neighbours crosses the ones in between.
+                let text = format!("{} {}{skipped}", r.kind, r.summary);
+                let at = pos2((a + b) / 2.0, y0 - 2.0);
+                text_on_canvas(
+                    painter,
+                    at,
+                    Align2::CENTER_BOTTOM,
+                    text,
+                    small.clone(),
+                    color,
+                );
             }
         }
-        if room(y0) {
-            let skipped = if r.status == Status::Skipped {
-                " (skipped)"
-            } else {
-                ""
-            };
-            // On the canvas's colour: a label between lifelines further
-            // apart than their neighbours crosses the ones in between.
-            let text = format!("{} {}{skipped}", r.kind, r.summary);
-            text_on_canvas(
-                &painter,
-                pos2((a + b) / 2.0, y0 - 2.0),
-                Align2::CENTER_BOTTOM,
-                text,
-                FontId::proportional(theme::SMALL_SIZE),
-                color,
-            );
-        }
     }
-    rect
 }
 
 /// A message's arrow from `a` to `b`, faded when it went nowhere.
