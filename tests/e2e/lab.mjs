@@ -330,6 +330,21 @@ try {
     await reader.keyboard.press("Escape");
     await reader.keyboard.press("Shift+Tab");
     assert.equal(await reader.evaluate(() => document.activeElement.id), "kinolab-a11y-on");
+    // One lesson per unit: headings, quiz options and, for every widget on
+    // the page, its description of what it shows.
+    for (const address of ["automation/open-and-closed-worlds", "wheeled-locomotion/wheel-kinds", "motion-control/open-loop",
+      "mechanisms/one-model-for-every-mechanism", "behaviours/what-a-behaviour-is", "potential-fields/five-primitives",
+      "legged-locomotion/legs-and-wheels", "architectures/what-an-architecture-is", "component-patterns/components",
+      "software-stability/what-stability-means"]) {
+      await reader.goto(`${server.url}#/${address}`);
+      await waitForPage(reader, address);
+      await reader.waitForFunction(() => document.querySelectorAll('#kinolab-a11y [role="group"]').length > 0, null, { timeout: 5000 })
+        .catch(() => { throw new Error(`${address}: no widget says what it shows`); });
+      const groups = await reader.locator('#kinolab-a11y [role="group"]').evaluateAll((es) => es.map((e) => e.getAttribute("aria-label") ?? ""));
+      assert.ok(groups.every((name) => name.length > 20), `${address}: a widget without a description: ${JSON.stringify(groups)}`);
+      assert.ok(await reader.getByRole("heading").count() >= 2, `${address}: headings`);
+      assert.ok(await reader.locator('#kinolab-a11y [role="radio"], #kinolab-a11y [role="checkbox"]').count() >= 1, `${address}: quiz options`);
+    }
     await reader.close();
   });
 

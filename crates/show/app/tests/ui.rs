@@ -847,3 +847,86 @@ fn the_field_sandbox_says_what_it_shows() {
         assert!(words.contains(part), "{part} missing from: {words}");
     }
 }
+
+/// What each widget's description must hold on its gallery defaults: a
+/// part only that widget says.
+const DESCRIBED: &[(&str, &[&str])] = &[
+    ("leg-events", &["legs:", "possible event sequences"]),
+    ("support-polygon", &["feet on the ground", "margin"]),
+    ("gait-studio", &["% of the cycle", "stability margin"]),
+    (
+        "cpg-lab",
+        &["Pulling towards the", "largest lag error", "cycles"],
+    ),
+    (
+        "hexapod-walker",
+        &["gait, stride", "% of the cycle", "feet on the ground"],
+    ),
+    (
+        "zmp-cart-table",
+        &["s after it", "CoM at", "ZMP at", "capture point"],
+    ),
+    ("grid-planner", &["world in cells of", "expanded", "cells"]),
+    (
+        "architecture-arena",
+        &["s into the run", "robot in focus", "sprung"],
+    ),
+    ("sensing-routes", &["wire", "routes:", "range rays"]),
+    ("component-lab", &["system at", "sent", "delivered", "lost"]),
+    ("which-pattern", &["Patterns chosen for", "needs", "so far"]),
+    ("ant-beach", &["ant lengths on beach", "tortuosity"]),
+    ("three-slots", &["Body ", "behaviours ", "world "]),
+    ("technology-churn", &["stable", "naive", "design"]),
+    ("morphology-builder", &["elements", "pairs", "dissolved"]),
+    ("scripted-vs-sensing", &["This batch:", "In the long run"]),
+    ("wheel-workbench", &["Mobility δm", "ICR"]),
+    (
+        "wheel-drive",
+        &[
+            "Robot ",
+            "driven by its",
+            "Twist (forward, sideways, turn)",
+            "Pose x =",
+        ],
+    ),
+    ("frame-rotation", &["Heading θ =", "As the robot sees it"]),
+    ("speed-profile", &["m/s", "Total", " s."]),
+    ("controller-playground", &["Gains k_ρ =", "k_α", "k_β"]),
+    ("mechanism-viewer", &["°", " at ("]),
+    (
+        "dh-link",
+        &["DH:", "a = ", "α = ", "d = ", "θ = ", "Frame i"],
+    ),
+    ("field-sandbox", &["A field of", "trap"]),
+    ("behaviour-arena", &["coordination", "has control"]),
+    ("braitenberg", &["s into the run", "vehicle 1", "light"]),
+    ("blend-or-choose", &["fly 1 at", "Blend:", "Choose:"]),
+    ("code", &["Your code", "Stepping through world"]),
+];
+
+#[test]
+fn every_widget_says_what_it_shows() {
+    // Each widget's state in words on its group in the accessibility
+    // tree: a widget that stops describing itself fails here.
+    let names: Vec<&str> = kinolab_widgets::registry::CONSTRUCTORS
+        .iter()
+        .map(|(name, _)| *name)
+        .collect();
+    let listed: Vec<&str> = DESCRIBED.iter().map(|(name, _)| *name).collect();
+    assert_eq!(listed, names, "every widget has its parts here");
+    for (name, parts) in DESCRIBED {
+        let mut h = animated(KinolabApp::new(None, &format!("#/gallery/{name}")));
+        h.run_steps(3);
+        let words: Vec<String> = h
+            .query_all_by_role(egui::accesskit::Role::Group)
+            .filter_map(|n| n.accesskit_node().label())
+            .filter(|l| !l.is_empty())
+            .collect();
+        assert_eq!(words.len(), 1, "{name}: one description, found {words:?}");
+        let words = &words[0];
+        println!("{name}: {words}");
+        for part in *parts {
+            assert!(words.contains(part), "{name}: {part} missing from: {words}");
+        }
+    }
+}

@@ -323,6 +323,8 @@ fn aria_role(role: Role) -> Option<&'static str> {
         Role::Heading => "heading",
         Role::TextInput => "textbox",
         Role::Image => "img",
+        // A widget, named by what it shows now.
+        Role::Group => "group",
         Role::Window => "main",
         _ => return None,
     })

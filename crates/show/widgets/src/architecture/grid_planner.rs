@@ -437,7 +437,36 @@ impl GridPlanner {
     }
 }
 
+impl GridPlanner {
+    /// How far the search shown has got, and what both searches find.
+    fn status(&self) -> String {
+        let (Some(s), Some(player)) = (&self.searches, &self.player) else {
+            return "The start or the goal is in an occupied cell (or the cell size does not fit the world): move it onto a free cell.".to_owned();
+        };
+        let astar = self.settings.algorithm == Algo::Astar;
+        let of = if astar { &s.astar } else { &s.dijkstra }.expanded.len();
+        // A tick expands a cell: the cursor counts the cells shown.
+        let k = player.cursor();
+        let now = if k < of {
+            format!("Expanded {k} of {of} cells so far. ")
+        } else {
+            String::new()
+        };
+        now + summary(&s.dijkstra, &s.astar, astar).as_str()
+    }
+}
+
 impl LabWidget for GridPlanner {
+    /// The world and cell size, then the search as far as it is shown.
+    fn describe(&self) -> Option<String> {
+        Some(format!(
+            "The {} world in cells of {} m. {}",
+            self.settings.world,
+            fixed(self.settings.cell, 2),
+            self.status()
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         if let Some(player) = &mut self.player {
@@ -449,20 +478,7 @@ impl LabWidget for GridPlanner {
             player.timeline(ui, "Cells expanded", cells, &mut |_, _, _, _| {});
             player.run(ui, 8);
         }
-        let text = match (&self.searches, &mut self.player) {
-            (Some(s), Some(player)) => {
-                let (k, of) = (player.state().k, player.state().search.expanded.len());
-                let astar = self.settings.algorithm == Algo::Astar;
-                let now = if k < of {
-                    format!("Expanded {k} of {of} cells so far. ")
-                } else {
-                    String::new()
-                };
-                now + summary(&s.dijkstra, &s.astar, astar).as_str()
-            }
-            _ => "The start or the goal is in an occupied cell (or the cell size does not fit the world): move it onto a free cell.".to_owned(),
-        };
-        ui.label(RichText::new(text).strong());
+        ui.label(RichText::new(self.status()).strong());
         ui.label(RichText::new("Grey cells are occupied for a robot of this radius: their centres are within the radius of an obstacle. Shaded cells were expanded, darker first.").small());
         self.exports(ui, view);
     }

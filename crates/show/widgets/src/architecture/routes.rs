@@ -270,7 +270,41 @@ impl SensingRoutes {
     }
 }
 
+/// What the wiring amounts to, in a sentence.
+fn verdict(paradigm: Option<Architecture>) -> &'static str {
+    match paradigm {
+        None => "Nothing is wired yet.",
+        Some(Architecture::Reactive) => {
+            "Reactive: every sensor goes straight to behaviours (local routes); there is no world model."
+        }
+        Some(Architecture::Hierarchical) => {
+            "Hierarchical: every sensor is fused into the world model (global routes); nothing reaches a behaviour directly."
+        }
+        Some(Architecture::Hybrid) => {
+            "Hybrid: behaviours read sensors directly and a cartographer also fuses sensors into a world model for the planner."
+        }
+    }
+}
+
 impl LabWidget for SensingRoutes {
+    /// Each sensor's route, the wires, and what the wiring amounts to.
+    fn describe(&self) -> Option<String> {
+        let wiring = self.wiring();
+        let report = wiring.report();
+        let wires = wiring.feeds.iter().flatten().filter(|f| **f).count();
+        let routes: Vec<String> = SENSORS
+            .iter()
+            .zip(&report.routes)
+            .map(|(sensor, route)| format!("{sensor} {}", route.name()))
+            .collect();
+        Some(format!(
+            "{wires} wire{}; routes: {}. {}",
+            if wires == 1 { "" } else { "s" },
+            routes.join(", "),
+            verdict(report.paradigm)
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.label("Start from:");
@@ -302,13 +336,7 @@ impl LabWidget for SensingRoutes {
         });
         let rect = self.diagram(ui);
         let report = self.wiring().report();
-        let verdict = match report.paradigm {
-            None => "Nothing is wired yet.".to_owned(),
-            Some(Architecture::Reactive) => "Reactive: every sensor goes straight to behaviours (local routes); there is no world model.".to_owned(),
-            Some(Architecture::Hierarchical) => "Hierarchical: every sensor is fused into the world model (global routes); nothing reaches a behaviour directly.".to_owned(),
-            Some(Architecture::Hybrid) => "Hybrid: behaviours read sensors directly and a cartographer also fuses sensors into a world model for the planner.".to_owned(),
-        };
-        ui.label(RichText::new(verdict).strong());
+        ui.label(RichText::new(verdict(report.paradigm)).strong());
         export::bar(
             ui,
             ui.scope_id().with("routes-exports"),

@@ -135,18 +135,63 @@ impl ScriptedVsSensing {
     }
 }
 
+impl ScriptedVsSensing {
+    /// The cell the settings make and this batch's parts through it.
+    fn batch(&self) -> Result<(PickCell, Vec<PickTrial>), String> {
+        let s = &self.settings;
+        let cell = PickCell::new(s.placement_error, s.gripper_tolerance, s.sensor_error)
+            .map_err(|e| e.to_string())?;
+        let trials = cell.run(PARTS, s.seed);
+        Ok((cell, trials))
+    }
+}
+
+/// How many parts of the batch each robot grasped.
+fn batch_text(trials: &[PickTrial]) -> String {
+    let scripted = trials.iter().filter(|t| t.scripted_grasped).count();
+    let sensing = trials.iter().filter(|t| t.sensing_grasped).count();
+    format!(
+        "This batch: scripted robot grasps {scripted} of {PARTS}, sensing robot {sensing} of {PARTS}."
+    )
+}
+
+/// Each robot's success rate over many batches.
+fn long_run_text(cell: &PickCell) -> String {
+    format!(
+        "In the long run: scripted {:.0} %, sensing {:.0} %",
+        cell.scripted_success() * 100.0,
+        cell.sensing_success() * 100.0
+    )
+}
+
 impl LabWidget for ScriptedVsSensing {
+    /// The errors set, this batch's grasps and the long-run rates.
+    fn describe(&self) -> Option<String> {
+        let s = &self.settings;
+        let set = format!(
+            "Parts stray {:.0} mm from their spot; the sensing robot's measurement error is {:.0} mm; gripper tolerance {:.0} mm.",
+            s.placement_error * 1000.0,
+            s.sensor_error * 1000.0,
+            s.gripper_tolerance * 1000.0
+        );
+        Some(match self.batch() {
+            Ok((cell, trials)) => {
+                format!("{set} {} {}.", batch_text(&trials), long_run_text(&cell))
+            }
+            Err(e) => format!("{set} {e}"),
+        })
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         let s = &self.settings;
-        let cell = match PickCell::new(s.placement_error, s.gripper_tolerance, s.sensor_error) {
-            Ok(cell) => cell,
+        let (cell, trials) = match self.batch() {
+            Ok(batch) => batch,
             Err(e) => {
-                ui.label(e.to_string());
+                ui.label(e);
                 return;
             }
         };
-        let trials = cell.run(PARTS, s.seed);
         let width = ui.available_width().min(720.0);
         let (response, painter) = ui.allocate_painter(vec2(width, 220.0), Sense::hover());
         let half = response.rect.width() / 2.0;
@@ -157,18 +202,10 @@ impl LabWidget for ScriptedVsSensing {
             );
             self.panel(ui, &painter, area, scripted, &trials);
         }
-        let scripted = trials.iter().filter(|t| t.scripted_grasped).count();
-        let sensing = trials.iter().filter(|t| t.sensing_grasped).count();
-        ui.label(
-            RichText::new(format!(
-                "This batch: scripted robot grasps {scripted} of {PARTS}, sensing robot {sensing} of {PARTS}."
-            ))
-            .strong(),
-        );
+        ui.label(RichText::new(batch_text(&trials)).strong());
         ui.label(format!(
-            "In the long run: scripted {:.0} %, sensing {:.0} % (gripper tolerance {:.0} mm; green = grasped, red = missed).",
-            cell.scripted_success() * 100.0,
-            cell.sensing_success() * 100.0,
+            "{} (gripper tolerance {:.0} mm; green = grasped, red = missed).",
+            long_run_text(&cell),
             s.gripper_tolerance * 1000.0
         ));
         export::bar(

@@ -559,7 +559,56 @@ impl Vehicles {
     }
 }
 
+impl Vehicles {
+    /// The instant shown: each vehicle's character, where it is and how
+    /// far from the nearest light.
+    fn description(&self) -> String {
+        use kinolab_common::display::fixed;
+        let Some(player) = &self.player else {
+            let why = self.problem.as_deref().unwrap_or_default();
+            return format!("The vehicles cannot run: {why}");
+        };
+        let room = player.peek();
+        let lights = room.lights();
+        let vehicles: Vec<String> = room
+            .runners
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let p = r.sim.pose;
+                let character = room.wiring(i).map_or("unwired", |w| w.character().name());
+                let nearest = lights
+                    .iter()
+                    .map(|l| (l[0] - p.x).hypot(l[1] - p.y))
+                    .fold(f64::INFINITY, f64::min);
+                let light = if nearest.is_finite() {
+                    format!(", {} m from the nearest light", fixed(nearest, 1))
+                } else {
+                    String::new()
+                };
+                format!(
+                    "vehicle {} ({character}) at ({}, {}) m{light}",
+                    i + 1,
+                    fixed(p.x, 1),
+                    fixed(p.y, 1)
+                )
+            })
+            .collect();
+        format!(
+            "{} s into the run, {} light{}: {}.",
+            fixed(player.time(), 1),
+            lights.len(),
+            if lights.len() == 1 { "" } else { "s" },
+            vehicles.join("; ")
+        )
+    }
+}
+
 impl LabWidget for Vehicles {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         if let Some(problem) = &self.problem {
             crate::widget::error_box(ui, "These vehicles cannot run", problem);

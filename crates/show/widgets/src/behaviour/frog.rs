@@ -47,19 +47,38 @@ pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
     }))
 }
 
+/// What a way of combining the pulls does with the flies: `caught`, the
+/// fly the tongue hits.
+fn verdict(how: Combine, caught: Option<usize>) -> String {
+    match (how, caught) {
+        (Combine::Blend, None) => {
+            "Blend: the pulls add up to a gap between the flies. Missed.".to_owned()
+        }
+        (Combine::Blend, Some(i)) => format!("Blend: caught fly {}.", i + 1),
+        (Combine::Choose, Some(i)) => {
+            format!("Choose: the nearer fly wins; caught fly {}.", i + 1)
+        }
+        (Combine::Choose, None) => "Choose: missed.".to_owned(),
+    }
+}
+
 impl Frog {
+    /// The flies where the learner put them.
+    fn flies(&self) -> Vec<Vec2> {
+        self.settings
+            .flies
+            .iter()
+            .map(|f| Vec2::new(f[0], f[1]))
+            .collect()
+    }
+
     /// One pond; returns where it is on screen.
     fn scene(&mut self, ui: &mut egui::Ui, how: Combine, width: f32, id: &str) -> egui::Rect {
         let (response, painter) = canvas(ui, vec2(width, width * 0.7), Sense::hover());
         let rect = response.rect;
         let view = PlaneView::fit(rect.shrink(6.0), POND.0, POND.1);
         let ink = ui.visuals().text_color();
-        let flies: Vec<Vec2> = self
-            .settings
-            .flies
-            .iter()
-            .map(|f| Vec2::new(f[0], f[1]))
-            .collect();
+        let flies = self.flies();
         let frog = Vec2::new(FROG[0], FROG[1]);
         let s = strike(frog, &flies, how);
         let at = view.to_screen(FROG);
@@ -112,22 +131,39 @@ impl Frog {
                 ];
             }
         }
-        let verdict = match (how, s.and_then(|s| s.caught)) {
-            (Combine::Blend, None) => {
-                "Blend: the pulls add up to a gap between the flies. Missed.".to_owned()
-            }
-            (Combine::Blend, Some(i)) => format!("Blend: caught fly {}.", i + 1),
-            (Combine::Choose, Some(i)) => {
-                format!("Choose: the nearer fly wins; caught fly {}.", i + 1)
-            }
-            (Combine::Choose, None) => "Choose: missed.".to_owned(),
-        };
-        corner_text(&painter, rect, 0, verdict, ink);
+        corner_text(
+            &painter,
+            rect,
+            0,
+            verdict(how, s.and_then(|s| s.caught)),
+            ink,
+        );
         rect
     }
 }
 
 impl LabWidget for Frog {
+    /// Where the flies are, and what blending and choosing each do.
+    fn describe(&self) -> Option<String> {
+        use kinolab_common::display::fixed;
+        let flies = self.flies();
+        let at: Vec<String> = flies
+            .iter()
+            .enumerate()
+            .map(|(i, f)| format!("fly {} at ({}, {}) m", i + 1, fixed(f.x, 2), fixed(f.y, 2)))
+            .collect();
+        let frog = Vec2::new(FROG[0], FROG[1]);
+        let verdicts: Vec<String> = [Combine::Blend, Combine::Choose]
+            .into_iter()
+            .map(|how| verdict(how, strike(frog, &flies, how).and_then(|s| s.caught)))
+            .collect();
+        Some(format!(
+            "The frog sits at (0, 0) m, the middle of the pond's bank; {}. {}",
+            at.join(", "),
+            verdicts.join(" ")
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         let wide = ui.available_width() >= 560.0;
         let w = if wide {

@@ -324,7 +324,67 @@ impl Code {
     }
 }
 
+impl Code {
+    /// The exercise, whether the code compiles and ran and how that went,
+    /// and the call shown in the world stepped through.
+    fn description(&self) -> String {
+        let title = self.exercise.title;
+        let verdict = match (&self.syntax, &self.results) {
+            (Some(e), _) => format!("Your code does not compile: {}.", editor::error_line(e)),
+            (None, None) => "Your code has not been run yet.".to_owned(),
+            (None, Some(check)) => check_text(check, self.submitted),
+        };
+        let world = self
+            .settings
+            .world
+            .checked_sub(1)
+            .and_then(|i| self.worlds.get(i))
+            .map_or("", |w| w.name.as_str());
+        let call = self.player.as_ref().and_then(|p| {
+            let shown = p.peek();
+            let k = shown.tick()?;
+            Some(format!(
+                " At {} s your function answered {}.",
+                kinolab_common::display::fixed(p.time(), 2),
+                k.returned
+            ))
+        });
+        format!(
+            "{title}. {verdict} Stepping through world “{world}”.{}",
+            call.unwrap_or_default()
+        )
+    }
+}
+
+/// How a check went: passed, or the first world that failed and why.
+fn check_text(check: &Check, submitted: bool) -> String {
+    if check.passed {
+        return if submitted {
+            "Passed on every world, those held back too.".to_owned()
+        } else {
+            "Passed on the worlds shown.".to_owned()
+        };
+    }
+    if let Some(e) = &check.error {
+        return format!("It stopped with an error: {}.", editor::error_line(e));
+    }
+    match check.worlds.iter().find(|w| !w.passed) {
+        Some(w) => format!(
+            "Not yet: it failed on {}{}.",
+            w.name,
+            w.reason
+                .as_deref()
+                .map_or(String::new(), |r| format!(" ({r})"))
+        ),
+        None => "Not yet.".to_owned(),
+    }
+}
+
 impl LabWidget for Code {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.record(FRAME_BUDGET);
         self.header(ui);

@@ -118,6 +118,35 @@ impl WhichPattern {
 }
 
 impl LabWidget for WhichPattern {
+    /// Each need's pattern (or that none is chosen yet), and how the runs
+    /// so far went.
+    fn describe(&self) -> Option<String> {
+        let picks: Vec<String> = REQUIREMENTS
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                format!(
+                    "{}: {}",
+                    r.id,
+                    self.settings.pick(i).unwrap_or("not chosen")
+                )
+            })
+            .collect();
+        let runs: Vec<&Trial> = self.trials.iter().flatten().collect();
+        let works = runs.iter().filter(|t| t.works).count();
+        let chosen = (0..REQUIREMENTS.len())
+            .filter(|&i| self.settings.pick(i).is_some())
+            .count();
+        Some(format!(
+            "Patterns chosen for {chosen} of {} needs ({}). {} run{} so far, {works} that work{}.",
+            REQUIREMENTS.len(),
+            picks.join("; "),
+            runs.len(),
+            if runs.len() == 1 { "" } else { "s" },
+            if works == 1 { "s" } else { "" }
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.label("Pick a pattern for each need, then run it: the lab builds a small system with that pattern and reports what happened.");
         for i in 0..REQUIREMENTS.len() {

@@ -133,7 +133,15 @@ impl Widget {
     }
 
     fn words(&self, ui: &mut egui::Ui) {
-        let p = self.settings.profile();
+        ui.label(self.settings.shape_text());
+        ui.label(RichText::new("The area under the speed curve is the distance.").small());
+    }
+}
+
+impl Settings {
+    /// The profile's shape, its peak speed and how long it takes.
+    fn shape_text(&self) -> String {
+        let p = self.profile();
         let shape = if p.cruise > 0.0 {
             format!(
                 "Trapezoid: ramps of {} s cover {} m together, then {} s at {} m/s.",
@@ -145,16 +153,27 @@ impl Widget {
         } else {
             format!(
                 "Triangle: too short to reach {} m/s; the speed peaks at √(d·a) = {} m/s.",
-                fixed(self.settings.max_speed, 2),
+                fixed(self.max_speed, 2),
                 fixed(p.peak, 2)
             )
         };
-        ui.label(format!("{shape} Total {} s.", fixed(p.duration(), 2)));
-        ui.label(RichText::new("The area under the speed curve is the distance.").small());
+        format!("{shape} Total {} s.", fixed(p.duration(), 2))
     }
 }
 
 impl LabWidget for Widget {
+    /// The move asked for, then the profile's shape, peak and duration.
+    fn describe(&self) -> Option<String> {
+        let s = &self.settings;
+        Some(format!(
+            "{} m with at most {} m/s and {} m/s². {}",
+            fixed(s.distance, 2),
+            fixed(s.max_speed, 2),
+            fixed(s.max_accel, 1),
+            s.shape_text()
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.sliders(ui);
         let plot = self.plot(ui);
@@ -221,6 +240,29 @@ mod tests {
         let mut w = widget(&[("distance", "3")]);
         assert!(w.restore(&bad).is_err());
         assert_eq!(w.settings.distance, 3.0);
+    }
+
+    #[test]
+    fn the_description_holds_the_peak_and_the_duration() {
+        let mut w = widget(&[("distance", "2"), ("max-speed", "0.5"), ("max-accel", "1")]);
+        let says = |w: &Widget| {
+            let p = w.settings.profile();
+            let words = w.describe().unwrap_or_default();
+            for part in [
+                format!("{} m/s", fixed(p.peak, 2)),
+                format!("Total {} s", fixed(p.duration(), 2)),
+            ] {
+                assert!(words.contains(&part), "{part} missing from: {words}");
+            }
+            words
+        };
+        let trapezoid = says(&w);
+        assert!(trapezoid.contains("Trapezoid"), "{trapezoid}");
+        // Too short to cruise: a triangle, and the words change with it.
+        w.settings.distance = 0.1;
+        let triangle = says(&w);
+        assert!(triangle.contains("Triangle"), "{triangle}");
+        assert_ne!(triangle, trapezoid);
     }
 
     #[test]

@@ -318,7 +318,42 @@ impl AntBeach {
     }
 }
 
+impl AntBeach {
+    /// The body on this beach, how far along its walk the instant shown
+    /// is, and how winding the whole path is.
+    fn description(&self) -> String {
+        use kinolab_common::display::fixed;
+        let s = &self.settings;
+        let body = format!(
+            "A body of {} ant lengths on beach {}",
+            fixed(s.size, 2),
+            s.seed
+        );
+        let (Some(w), Some(player)) = (&self.walk, &self.player) else {
+            return format!("{body}: the beach is not laid out yet.");
+        };
+        format!(
+            "{body}: step {} of {} of its walk. The path is {} m long, tortuosity {}, with {} turns; {} pebbles matter at this size{}.",
+            player.cursor(),
+            w.path.len().saturating_sub(1),
+            fixed(w.length, 3),
+            fixed(w.tortuosity, 3),
+            w.turns,
+            w.obstacles,
+            if w.reached {
+                ""
+            } else {
+                "; it did not get across"
+            }
+        )
+    }
+}
+
 impl LabWidget for AntBeach {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.ensure();
         self.controls(ui);

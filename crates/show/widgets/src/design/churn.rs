@@ -132,6 +132,25 @@ fn link_line(a: Pos2, b: Pos2) -> Vec<Pos2> {
     }
 }
 
+/// The classes replacing `swap` edits in design `d`.
+fn edited(d: &Design, swap: Option<&str>) -> Vec<&'static str> {
+    swap.and_then(|io| d.churn(io).ok()).unwrap_or_default()
+}
+
+/// A design's title: what replacing `swap` costs in it.
+fn title(d: &Design, swap: Option<&str>, edited: &[&str]) -> String {
+    match swap {
+        Some(io) => format!(
+            "{} design: replacing {io} edits {} class{}: {}",
+            d.name,
+            edited.len(),
+            if edited.len() == 1 { "" } else { "es" },
+            edited.join(", ")
+        ),
+        None => format!("{} design", d.name),
+    }
+}
+
 impl Churn {
     /// The two designs side by side (one under the other when narrow);
     /// where they were drawn.
@@ -146,19 +165,9 @@ impl Churn {
         let swap = self.settings.swap();
         let show = |ui: &mut egui::Ui, d: &Design| {
             ui.vertical(|ui| {
-                let edited = swap.and_then(|io| d.churn(io).ok()).unwrap_or_default();
-                let title = match swap {
-                    Some(io) => format!(
-                        "{} design: replacing {io} edits {} class{}: {}",
-                        d.name,
-                        edited.len(),
-                        if edited.len() == 1 { "" } else { "es" },
-                        edited.join(", ")
-                    ),
-                    None => format!("{} design", d.name),
-                };
+                let edited = edited(d, swap);
                 ui.set_width(width);
-                ui.label(RichText::new(title).strong());
+                ui.label(RichText::new(title(d, swap, &edited)).strong());
                 draw(ui, d, &edited, swap, width);
             })
             .response
@@ -178,6 +187,21 @@ impl Churn {
 }
 
 impl LabWidget for Churn {
+    /// What the replacement chosen costs in each design.
+    fn describe(&self) -> Option<String> {
+        let swap = self.settings.swap();
+        if swap.is_none() {
+            return Some(
+                "The stable and the naive design side by side; nothing is replaced yet: pick a device to replace.".to_owned(),
+            );
+        }
+        let titles: Vec<String> = [stable(), naive()]
+            .iter()
+            .map(|d| title(d, swap, &edited(d, swap)))
+            .collect();
+        Some(format!("The {}.", titles.join(". The ")))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.label("Replace:");

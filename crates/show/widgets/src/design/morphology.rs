@@ -282,8 +282,7 @@ impl Morphology {
         if to != self.settings.to(model) {
             self.settings.to = Some(to);
         }
-        let (from, dissolved) = (self.settings.from, self.settings.dissolved());
-        match between(model, &self.q, from, to, &dissolved) {
+        match self.between(model) {
             Some(t) => ui.label(RichText::new(format!("T(from → to): {}", describe(&t))).strong()),
             None => ui.label(
                 RichText::new("No transform: a dissolved pair lies on the path between them.")
@@ -320,7 +319,44 @@ fn describe(t: &Pose) -> String {
     )
 }
 
+impl Morphology {
+    /// Frame "to" seen from frame "from", `None` when a dissolved pair
+    /// lies between them.
+    fn between(&self, model: &Model) -> Option<Pose> {
+        let s = &self.settings;
+        between(model, &self.q, s.from, s.to(model), &s.dissolved())
+    }
+
+    /// The mechanism's size, the pairs dissolved and the transform asked for.
+    fn description(&self) -> String {
+        let Some(model) = &self.model else {
+            return format!("There is no mechanism named {}.", self.settings.mechanism);
+        };
+        let name = |b: usize| model.bodies().get(b).map_or("?", |x| x.name.as_str());
+        let (from, to) = (self.settings.from, self.settings.to(model));
+        let transform = match self.between(model) {
+            Some(t) => format!("T({} → {}): {}", name(from), name(to), describe(&t)),
+            None => format!(
+                "No transform from {} to {}: a dissolved pair lies between them",
+                name(from),
+                name(to)
+            ),
+        };
+        format!(
+            "{}: {} elements, {} pairs, {} dissolved. {transform}.",
+            model.name(),
+            model.bodies().len(),
+            model.joints().len(),
+            self.settings.dissolved().len()
+        )
+    }
+}
+
 impl LabWidget for Morphology {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         let before = self.settings.mechanism.clone();
         egui::ComboBox::from_label("mechanism")

@@ -356,7 +356,34 @@ impl ThreeSlots {
     }
 }
 
+/// How a combination's run went, in a sentence.
+fn outcome_text(o: &Outcome) -> String {
+    if o.reached {
+        format!(
+            "Reached the goal in {:.1} s ({} collisions).",
+            o.time.unwrap_or_default(),
+            o.collisions
+        )
+    } else {
+        format!("Did not reach the goal: {}.", o.why)
+    }
+}
+
 impl LabWidget for ThreeSlots {
+    /// The three slots as chosen, and how the run went.
+    fn describe(&self) -> Option<String> {
+        let s = &self.settings;
+        let how = match (&self.problem, &self.run) {
+            (Some(p), _) => format!("This combination cannot run: {p}."),
+            (None, Some((o, _))) => outcome_text(o),
+            (None, None) => "It has not run.".to_owned(),
+        };
+        Some(format!(
+            "Body {}, behaviours {}, world {}. {how}",
+            s.body, s.behaviours, s.world
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.slots(ui);
         if let Some(p) = &self.problem {
@@ -365,16 +392,7 @@ impl LabWidget for ThreeSlots {
         let width = ui.available_width();
         let run = self.draw_run(ui, width);
         if let Some((o, _)) = &self.run {
-            let text = if o.reached {
-                format!(
-                    "Reached the goal in {:.1} s ({} collisions).",
-                    o.time.unwrap_or_default(),
-                    o.collisions
-                )
-            } else {
-                format!("Did not reach the goal: {}.", o.why)
-            };
-            ui.label(RichText::new(text).strong());
+            ui.label(RichText::new(outcome_text(o)).strong());
         }
         self.design_view(ui);
         ui.label(RichText::new("Every combination (tap a failure for why):").strong());

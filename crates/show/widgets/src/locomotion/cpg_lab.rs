@@ -160,6 +160,11 @@ impl Tune {
             )
     }
 
+    /// The duty factor β of the gait pulled towards (which feet stand).
+    fn duty_factor(&self) -> f64 {
+        kinolab_locomotion::named(&self.gait).map_or(0.5, |g| g.duty_factor)
+    }
+
     fn rows(&self) -> Vec<Vec<f64>> {
         self.weights.iter().map(|r| r.to_vec()).collect()
     }
@@ -412,7 +417,7 @@ impl CpgLab {
         let ink = ui.visuals().text_color();
         let now = self.player.state();
         let state = &now.run.state;
-        let beta = kinolab_locomotion::named(&now.tune.gait).map_or(0.5, |g| g.duty_factor);
+        let beta = now.tune.duty_factor();
         let r = (width / 12.0).min(38.0);
         for (i, name) in LEGS.iter().enumerate() {
             let centre = rect.left_top() + vec2(width * (0.125 + 0.25 * i as f32), 60.0);
@@ -619,7 +624,37 @@ fn weight_grid(ui: &mut egui::Ui, weights: &mut [[f64; 4]; 4]) {
     });
 }
 
+impl CpgLab {
+    /// The gait pulled towards, how far the network is from it at the
+    /// instant shown, and which feet stand.
+    fn description(&self) -> String {
+        let now = self.player.peek();
+        let (net, state) = (&now.run.network, &now.run.state);
+        let beta = now.tune.duty_factor();
+        let standing: Vec<&str> = (0..LEGS.len())
+            .filter(|&i| Network::in_stance(state, i, beta))
+            .map(|i| LEGS[i])
+            .collect();
+        format!(
+            "Pulling towards the {} at {} Hz, {} s into the run: largest lag error {} cycles. Feet in stance: {}.",
+            now.tune.gait.trim_start_matches("quadruped-"),
+            fixed(now.tune.frequency, 2),
+            fixed(self.player.time(), 1),
+            fixed(net.lag_error(state), 3),
+            if standing.is_empty() {
+                "none".to_owned()
+            } else {
+                standing.join(", ")
+            }
+        )
+    }
+}
+
 impl LabWidget for CpgLab {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         self.player.controls(ui);

@@ -37,7 +37,27 @@ fn max_legs() -> u32 {
     *range(NAME, "legs").end() as u32
 }
 
+/// The count for `k` legs, as the widget prints it.
+fn count_text(k: u32) -> String {
+    format!(
+        "N = (2·{} − 1)! = {}! = {} possible event sequences",
+        k,
+        2 * k - 1,
+        group_digits(leg_events(k).unwrap_or(0))
+    )
+}
+
 impl LabWidget for LegEvents {
+    /// The number of legs and the count it gives.
+    fn describe(&self) -> Option<String> {
+        let k = self.settings.legs;
+        Some(format!(
+            "{k} leg{}: {}.",
+            if k == 1 { "" } else { "s" },
+            count_text(k)
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         let legs = range(NAME, "legs");
         let legs = (*legs.start() as u32)..=(*legs.end() as u32);
@@ -49,14 +69,9 @@ impl LabWidget for LegEvents {
         let k = self.settings.legs;
         let count = leg_events(k).unwrap_or(0);
         ui.label(
-            RichText::new(format!(
-                "N = (2·{} − 1)! = {}! = {} possible event sequences",
-                k,
-                2 * k - 1,
-                group_digits(count)
-            ))
-            .size(theme::BODY_SIZE + 2.0)
-            .strong(),
+            RichText::new(count_text(k))
+                .size(theme::BODY_SIZE + 2.0)
+                .strong(),
         );
         if k > 1 {
             let previous = leg_events(k - 1).unwrap_or(1).max(1);

@@ -124,6 +124,12 @@ impl Settings {
         self.lifted = (!lifted.is_empty()).then_some(lifted);
     }
 
+    /// Whether the stance is statically stable, and by how much (`None`
+    /// with no foot down).
+    fn verdict(&self) -> Option<Stability> {
+        static_stability(self.com, &self.grounded()).ok()
+    }
+
     fn grounded(&self) -> Vec<Point> {
         self.feet()
             .iter()
@@ -249,6 +255,18 @@ fn verdict_text(verdict: Option<&Stability>) -> String {
 }
 
 impl LabWidget for SupportPolygon {
+    /// How many feet are down, and the verdict with its margin.
+    fn describe(&self) -> Option<String> {
+        let feet = self.settings.feet();
+        let down = feet.iter().filter(|f| f.on_ground).count();
+        let verdict = verdict_text(self.settings.verdict().as_ref());
+        Some(format!(
+            "{down} of {} feet on the ground. {}.",
+            feet.len(),
+            verdict.trim_end_matches('.')
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         let width = ui.available_width().min(720.0);
         let (response, painter) = canvas(ui, vec2(width, 320.0), Sense::hover());
@@ -259,7 +277,7 @@ impl LabWidget for SupportPolygon {
             [VIEW_HALF_WIDTH, VIEW_HALF_HEIGHT],
         );
         self.input(ui, &view);
-        let verdict = static_stability(self.settings.com, &self.settings.grounded()).ok();
+        let verdict = self.settings.verdict();
         self.draw(ui, &painter, &view, verdict.as_ref());
         painter.text(
             rect.right_top() + vec2(-10.0, 10.0),
@@ -348,6 +366,29 @@ mod tests {
             initial: settings.clone(),
             settings,
         }
+    }
+
+    #[test]
+    fn the_description_holds_the_feet_down_and_the_margin() {
+        let mut w = widget(&[("legs", "4")]);
+        let margin = |w: &SupportPolygon| {
+            let s = static_stability(w.settings.com, &w.settings.grounded());
+            s.map_or(f64::NAN, |s| s.margin)
+        };
+        let words = w.describe().unwrap_or_default();
+        assert!(words.starts_with("4 of 4 feet on the ground."), "{words}");
+        let cm = fixed(margin(&w) * 100.0, 1);
+        assert!(words.contains(&format!("margin {cm} cm")), "{words}");
+        // The centre of mass moved off the body: the words follow.
+        w.settings.com = [0.4, 0.0];
+        let moved = w.describe().unwrap_or_default();
+        let out = fixed(-margin(&w) * 100.0, 1);
+        assert!(moved.contains(&format!("{out} cm outside")), "{moved}");
+        let mut feet = w.settings.feet();
+        feet[0].on_ground = false;
+        w.settings.set_feet(&feet);
+        let lifted = w.describe().unwrap_or_default();
+        assert!(lifted.starts_with("3 of 4 feet on the ground."), "{lifted}");
     }
 
     #[test]

@@ -326,6 +326,19 @@ impl HexapodWalker {
     }
 }
 
+/// The stance feet on the ground (the support polygon's corners) and the
+/// static margin of the centre of mass above the origin, m.
+fn stance(w: &Walker, step: &Step) -> (Vec<[f64; 2]>, Option<f64>) {
+    let stance: Vec<[f64; 2]> = (0..6)
+        .filter(|&i| w.gait.in_stance(i, step.tau))
+        .map(|i| [step.targets[i][0], step.targets[i][1]])
+        .collect();
+    let margin = kinolab_locomotion::static_stability([0.0, 0.0], &stance)
+        .ok()
+        .map(|s| s.margin);
+    (stance, margin)
+}
+
 /// The support polygon under the body (the stance feet on the ground)
 /// and the centre of mass above it; the static margin and how many feet
 /// stand.
@@ -337,15 +350,8 @@ fn support(
     w: &Walker,
     step: &Step,
 ) -> (Option<f64>, usize) {
-    // The support polygon: the stance feet on the ground.
-    let stance: Vec<[f64; 2]> = (0..6)
-        .filter(|&i| w.gait.in_stance(i, step.tau))
-        .map(|i| [step.targets[i][0], step.targets[i][1]])
-        .collect();
+    let (stance, margin) = stance(w, step);
     let hull = kinolab_locomotion::convex_hull(&stance);
-    let margin = kinolab_locomotion::static_stability([0.0, 0.0], &stance)
-        .ok()
-        .map(|s| s.margin);
     let good = margin.is_some_and(|m| m > 0.0);
     let color = if good {
         theme::good_color(ui)
@@ -370,7 +376,37 @@ fn support(
     (margin, stance.len())
 }
 
+impl HexapodWalker {
+    /// The gait, where in the cycle the instant shown is, the feet down
+    /// and the static margin, and any foot out of reach.
+    fn description(&self) -> String {
+        let gait = self.settings.gait.trim_start_matches("hexapod-");
+        let k = self.player.cursor();
+        let (Some(w), Some(step)) = (&self.walker, self.steps.get(k)) else {
+            return format!("The {gait} gait cannot be walked with these settings.");
+        };
+        let (feet, margin) = stance(w, step);
+        let margin = margin.map_or("no support polygon".to_owned(), |m| {
+            format!("static margin {} cm", fixed(m * 100.0, 1))
+        });
+        let mut text = format!(
+            "The {gait} gait, stride {} cm, at {}% of the cycle: {} feet on the ground, {margin}.",
+            fixed(self.settings.stride * 100.0, 1),
+            fixed(step.tau * 100.0, 0),
+            feet.len()
+        );
+        if !step.unreachable.is_empty() {
+            text += &format!(" Out of reach: {}.", step.unreachable.join(", "));
+        }
+        text
+    }
+}
+
 impl LabWidget for HexapodWalker {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         self.player.controls(ui);

@@ -338,7 +338,49 @@ impl ZmpCartTable {
     }
 }
 
+impl ZmpCartTable {
+    /// The sample at the instant shown, without moving the player.
+    fn shown(&self) -> Option<BalanceSample> {
+        let (player, run) = (self.player.as_ref()?, self.run.as_ref()?);
+        run.samples.get(player.cursor()).copied()
+    }
+
+    /// The instant shown: where the body and the ZMP are, and whether the
+    /// ZMP the motion needs (the capture point) is on the foot.
+    fn description(&self) -> String {
+        let Some(s) = self.shown() else {
+            return "These settings cannot be pushed.".to_owned();
+        };
+        let cm = |x: f64| fixed(x * 100.0, 1);
+        let foot = if s.inside {
+            format!(
+                "inside the foot (heel {} cm to toe {} cm)",
+                cm(HEEL),
+                cm(TOE)
+            )
+        } else {
+            "past the toe, so the real ZMP stays at the toe and the body falls".to_owned()
+        };
+        let foot = format!(
+            "the ZMP this motion needs (the capture point, {} cm) is {foot}",
+            cm(s.wanted)
+        );
+        format!(
+            "Push of {} m/s, {} s after it: CoM at {} cm moving {} m/s, ZMP at {} cm; {foot}.",
+            fixed(self.settings.push, 2),
+            fixed(s.t, 2),
+            cm(s.x),
+            fixed(s.xd, 2),
+            cm(s.zmp)
+        )
+    }
+}
+
 impl LabWidget for ZmpCartTable {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         if let Some(player) = &mut self.player {
@@ -445,6 +487,30 @@ mod tests {
         assert!(w.restore(&bad).is_err());
         assert_eq!(w.settings.push, 0.4);
         assert!(create(&spec(NAME, &[])).is_ok());
+    }
+
+    #[test]
+    fn the_description_follows_the_instant_shown() {
+        let mut w = widget(&[("push", "0.3")]);
+        let Ok(run) = w.settings.run_file().run() else {
+            panic!("the push does not run")
+        };
+        let at = |w: &ZmpCartTable| w.describe().unwrap_or_default();
+        let start = at(&w);
+        assert!(start.contains(" 0.00 s after it"), "{start}");
+        w.seek(1.0);
+        let s = run.samples[w.player.as_ref().map_or(0, Player::cursor)];
+        assert!((s.t - 1.0).abs() < 1e-9);
+        let words = at(&w);
+        for part in [
+            format!("{} s after it", fixed(s.t, 2)),
+            format!("CoM at {} cm", fixed(s.x * 100.0, 1)),
+            format!("ZMP at {} cm", fixed(s.zmp * 100.0, 1)),
+        ] {
+            assert!(words.contains(&part), "{part} missing from: {words}");
+        }
+        assert_ne!(words, start);
+        assert_eq!(words.contains("inside the foot"), s.inside, "{words}");
     }
 
     #[test]

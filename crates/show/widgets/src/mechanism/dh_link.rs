@@ -5,7 +5,7 @@
 
 use egui::{Painter, Rect, RichText, Sense, Stroke, vec2};
 use kinolab_common::Feedback;
-use kinolab_common::display::signed;
+use kinolab_common::display::{fixed, signed};
 use kinolab_mechanism::dh::{Convention, link, steps};
 use kinolab_mechanism::exercise::Task;
 use kinolab_mechanism::{Pose, Vector3};
@@ -108,6 +108,39 @@ impl DhLink {
     }
 
     /// The convention's formula, the view buttons and the four sliders.
+    /// Frame i seen from frame i−1: the link's transform.
+    fn frame_i(&self) -> Pose {
+        let [a, alpha, d, theta] = self.radians();
+        link(self.convention, a, alpha, d, theta)
+    }
+
+    /// The convention, the four parameters, and where frame i lands.
+    fn description(&self) -> String {
+        let convention = match self.convention {
+            Convention::StandardDh => "Standard",
+            Convention::ModifiedDh => "Modified",
+        };
+        let row: Vec<String> = SPANS
+            .iter()
+            .zip(self.settings.row)
+            .enumerate()
+            .map(|(k, ((name, _, unit), value))| {
+                format!(
+                    "{name} = {}{unit}",
+                    fixed(value, if k % 2 == 1 { 0 } else { 2 })
+                )
+            })
+            .collect();
+        let o = self.frame_i().translation.vector;
+        format!(
+            "{convention} DH: {}. Frame i's origin is at ({}, {}, {}) m in frame i−1.",
+            row.join(", "),
+            fixed(o.x, 3),
+            fixed(o.y, 3),
+            fixed(o.z, 3)
+        )
+    }
+
     fn controls(&mut self, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.label(match self.convention {
@@ -186,7 +219,7 @@ impl DhLink {
             let at = self.camera.project(rect, &goal.translation.vector).0;
             labels.add(at, "target", ink.gamma_multiply(0.7));
         }
-        let frame_i = link(self.convention, a, alpha, d, theta);
+        let frame_i = self.frame_i();
         let axes = draw_frame(painter, &self.camera, rect, &frame_i, 0.25, 1.0, 3.0);
         labels.avoid_lines(&axes);
         labels.add(
@@ -244,6 +277,10 @@ fn matrix(ui: &mut egui::Ui, h: &kinolab_mechanism::Matrix4<f64>) {
 }
 
 impl LabWidget for DhLink {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         let size = vec2(ui.available_width().min(720.0), 300.0);
@@ -325,6 +362,38 @@ mod tests {
         assert_eq!(other.convention, Convention::ModifiedDh);
         assert!(create(&spec("dh-link", &[("row", "1, 2, 3")])).is_err());
         assert!(create(&spec("dh-link", &[("convention", "craig")])).is_err());
+    }
+
+    #[test]
+    fn the_description_holds_the_row_and_where_frame_i_lands() {
+        let mut w = widget(&[("row", "0.5, 90, 0.2, 30")]);
+        let says = |w: &DhLink| {
+            let words = w.describe().unwrap_or_default();
+            let [a, alpha, d, theta] = w.radians();
+            let o = link(w.convention, a, alpha, d, theta).translation.vector;
+            let at = format!(
+                "({}, {}, {}) m",
+                fixed(o.x, 3),
+                fixed(o.y, 3),
+                fixed(o.z, 3)
+            );
+            assert!(words.contains(&at), "{at} missing from: {words}");
+            words
+        };
+        let first = says(&w);
+        for part in [
+            "Standard DH",
+            "a = 0.50 m",
+            "α = 90°",
+            "d = 0.20 m",
+            "θ = 30°",
+        ] {
+            assert!(first.contains(part), "{part} missing from: {first}");
+        }
+        w.settings.row[3] = -45.0;
+        let turned = says(&w);
+        assert!(turned.contains("θ = -45°"), "{turned}");
+        assert_ne!(turned, first);
     }
 
     #[test]

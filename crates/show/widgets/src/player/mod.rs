@@ -215,6 +215,20 @@ impl<S: Simulation> Player<S> {
         }
     }
 
+    /// The run at the instant shown, for a look that cannot change the
+    /// player (a widget's description): borrowed when it is at hand (the
+    /// live end, or the instant last drawn), replayed otherwise.
+    pub fn peek(&self) -> std::borrow::Cow<'_, S> {
+        use std::borrow::Cow;
+        if self.at_end() {
+            return Cow::Borrowed(&self.live);
+        }
+        match &self.shown {
+            Some((at, run)) if *at == self.cursor => Cow::Borrowed(run),
+            _ => Cow::Owned(self.replayed(self.cursor)),
+        }
+    }
+
     /// The run after `k` ticks, from the copy at or before `k`.
     fn replayed(&self, k: usize) -> S {
         let i = (k / self.spacing).min(self.checkpoints.len() - 1);

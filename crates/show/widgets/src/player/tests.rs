@@ -229,3 +229,19 @@ fn a_replay_in_pieces_lands_where_one_at_once_does() {
     // 200 ticks at 1, 200 at 2, 400 at -1.
     assert_eq!(whole.state().value, 200.0 + 400.0 - 400.0);
 }
+
+#[test]
+fn a_peek_sees_the_instant_shown_without_moving_anything() {
+    let mut p = Player::new(counter());
+    p.seek(300);
+    p.spring(Kick(2.0));
+    p.seek(500);
+    for k in [0, 17, 300, 301, 444, 500] {
+        p.seek(k);
+        // Before the instant is drawn (replayed), then after (borrowed).
+        let peeked = p.peek().into_owned();
+        assert_eq!(peeked, *p.state(), "after {k} ticks");
+        assert!(matches!(p.peek(), std::borrow::Cow::Borrowed(_)));
+        assert_eq!(p.cursor(), k);
+    }
+}

@@ -169,28 +169,42 @@ impl Drive {
     }
 
     /// The twist to drive with this frame, and a note when the request
-    /// could not be met as asked.
+    /// could not be met as asked; asking for a twist steers the wheels.
     fn current_twist(&mut self) -> (Vector3<f64>, Option<String>) {
+        if self.settings.mode == Mode::Twist {
+            self.steer();
+        }
+        self.resolved()
+    }
+
+    /// Steer the wheels as inverse kinematics says for the twist asked.
+    fn steer(&mut self) {
+        let Ok(ik) = self.chassis.inverse(Vector3::from(self.twist())) else {
+            return;
+        };
+        if !ik.feasible {
+            return;
+        }
+        for (i, c) in ik.wheels.iter().enumerate() {
+            let w = &self.chassis.wheels()[i];
+            if w.kind == WheelKind::Steered && (c.steer - w.beta).abs() > 1e-12 {
+                let mut wheels = self.chassis.wheels().to_vec();
+                wheels[i].beta = c.steer;
+                if let Ok(next) = Chassis::new(self.chassis.name().to_owned(), wheels) {
+                    self.chassis = next;
+                }
+            }
+        }
+    }
+
+    /// The twist the settings drive with, and a note when the request
+    /// cannot be met as asked (changing nothing).
+    fn resolved(&self) -> (Vector3<f64>, Option<String>) {
         match self.settings.mode {
             Mode::Twist => {
                 let want = Vector3::from(self.twist());
                 match self.chassis.inverse(want) {
-                    Ok(ik) if ik.feasible => {
-                        // Steer the wheels as inverse kinematics says.
-                        for (i, c) in ik.wheels.iter().enumerate() {
-                            let w = &self.chassis.wheels()[i];
-                            if w.kind == WheelKind::Steered && (c.steer - w.beta).abs() > 1e-12 {
-                                let mut wheels = self.chassis.wheels().to_vec();
-                                wheels[i].beta = c.steer;
-                                if let Ok(next) =
-                                    Chassis::new(self.chassis.name().to_owned(), wheels)
-                                {
-                                    self.chassis = next;
-                                }
-                            }
-                        }
-                        (want, None)
-                    }
+                    Ok(ik) if ik.feasible => (want, None),
                     Ok(ik) => {
                         let names: Vec<String> = ik
                             .violations
@@ -480,7 +494,8 @@ impl Drive {
     }
 
     /// The twist, ICR and pose in words, and what each wheel does.
-    fn readouts(&self, ui: &mut egui::Ui, twist: Vector3<f64>) {
+    /// The twist driven, its ICR and the pose, in words.
+    fn motion_text(&self, twist: Vector3<f64>) -> String {
         let icr_text = match twist_icr(&twist) {
             Icr::Point { x, y } => format!(
                 "ICR at ({}, {}) m in the robot frame",
@@ -490,12 +505,19 @@ impl Drive {
             Icr::Infinity { .. } => "ICR at infinity: driving straight".to_owned(),
             _ => "standing still".to_owned(),
         };
-        ui.label(format!(
+        format!(
             "Twist (forward, sideways, turn) = ({} m/s, {} m/s, {} rad/s). {icr_text}. Pose x = {} m, y = {} m, θ = {}°.",
-            fixed(twist.x, 2), fixed(twist.y, 2), fixed(twist.z, 2),
-            fixed(self.pose[0], 2), fixed(self.pose[1], 2),
+            fixed(twist.x, 2),
+            fixed(twist.y, 2),
+            fixed(twist.z, 2),
+            fixed(self.pose[0], 2),
+            fixed(self.pose[1], 2),
             fixed(kinolab_common::angle::wrap(self.pose[2]).to_degrees(), 0)
-        ));
+        )
+    }
+
+    fn readouts(&self, ui: &mut egui::Ui, twist: Vector3<f64>) {
+        ui.label(self.motion_text(twist));
         if self.settings.mode == Mode::Twist
             && let Ok(ik) = self.chassis.inverse(twist)
         {
@@ -525,6 +547,26 @@ impl Drive {
 }
 
 impl LabWidget for Drive {
+    /// The robot, how it is driven, the twist with its ICR and the pose,
+    /// and why the request is not met when it is not.
+    fn describe(&self) -> Option<String> {
+        let (twist, note) = self.resolved();
+        let how = match self.settings.mode {
+            Mode::Twist => "driven by its twist",
+            Mode::Wheels => "driven by its wheel spins",
+        };
+        let mut text = format!(
+            "Robot {}, {how}{}. {}",
+            self.chassis.name(),
+            if self.running { "" } else { ", paused" },
+            self.motion_text(twist)
+        );
+        if let Some(note) = note {
+            text = format!("{text} {note}");
+        }
+        Some(text)
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         let before = self.settings.clone();
         self.controls(ui);

@@ -162,21 +162,52 @@ fn robot_body(painter: &Painter, p: Pos2, x_r: Vec2, y_r: Vec2, color: egui::Col
     ));
 }
 
+impl FrameRotation {
+    /// The world motion seen from the robot: R(θ) times it.
+    fn robot_motion(&self) -> Vector3<f64> {
+        rotation(self.setup.theta_deg.to_radians()) * Vector3::from(self.setup.motion)
+    }
+}
+
+/// The motion in the robot's frame, in words.
+fn seen_text(robot: &Vector3<f64>) -> String {
+    format!(
+        "As the robot sees it: {}, {}, turning {} rad/s.",
+        along(robot.x, "forward", "backward", "m/s"),
+        along(robot.y, "to its left", "to its right", "m/s"),
+        fixed(robot.z, 2),
+    )
+}
+
 impl LabWidget for FrameRotation {
+    /// The heading, the world motion, and that motion as the robot sees it.
+    fn describe(&self) -> Option<String> {
+        let [x, y, turn] = self.setup.motion;
+        Some(format!(
+            "Heading θ = {}°. In the world: {} m/s along x, {} m/s along y, turning {} rad/s. {}",
+            fixed(self.setup.theta_deg, 0),
+            fixed(x, 2),
+            fixed(y, 2),
+            fixed(turn, 2),
+            seen_text(&self.robot_motion())
+        ))
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         ui.vertical(|ui| self.controls(ui));
         let r = rotation(self.setup.theta_deg.to_radians());
-        let robot = r * Vector3::from(self.setup.motion);
+        let robot = self.robot_motion();
         let size = vec2(ui.available_width().min(720.0), 260.0);
         let (response, painter) = canvas(ui, size, Sense::hover());
         self.drawing(ui, &painter, response.rect);
         self.equation(ui, &r, &robot);
-        ui.label(RichText::new(format!(
-            "As the robot sees it: {}, {}, turning {} rad/s. The inverse of R(θ) is its transpose: applying it brings the motion back.",
-            along(robot.x, "forward", "backward", "m/s"),
-            along(robot.y, "to its left", "to its right", "m/s"),
-            fixed(robot.z, 2),
-        )).small());
+        ui.label(
+            RichText::new(format!(
+                "{} The inverse of R(θ) is its transpose: applying it brings the motion back.",
+                seen_text(&robot)
+            ))
+            .small(),
+        );
         export::bar(
             ui,
             ui.scope_id().with("frame-rotation-exports"),

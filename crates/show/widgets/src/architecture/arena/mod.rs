@@ -179,7 +179,61 @@ impl ArchitectureArena {
     }
 }
 
+impl ArchitectureArena {
+    /// The instant shown: where each robot is (or when it reached the
+    /// goal) and the surprises so far.
+    fn description(&self) -> String {
+        let Some(player) = &self.player else {
+            let why = self.problem.as_deref().unwrap_or_default();
+            return format!("This set-up cannot run: {why}");
+        };
+        let race = player.peek();
+        let robots: Vec<String> = race
+            .arena
+            .entrants
+            .iter()
+            .zip(canvas::NAMES)
+            .map(|(e, name)| robot_words(e, name))
+            .collect();
+        let sprung = race.sprung.len();
+        format!(
+            "The {} world, {} s into the run ({} robot in focus): {}. Scripted surprise: {}; {sprung} sprung while it ran.",
+            self.settings.world.id(),
+            kinolab_common::display::fixed(player.time(), 1),
+            self.settings.focus.name(),
+            robots.join("; "),
+            self.settings.scripted().id(),
+        )
+    }
+}
+
+/// One robot at the instant shown, in words.
+fn robot_words(e: &kinolab_architectures::arena::Entrant, name: &str) -> String {
+    use kinolab_common::display::fixed;
+    let s = &e.scores;
+    let bumps = match s.collisions {
+        0 => String::new(),
+        1 => ", 1 collision".to_owned(),
+        n => format!(", {n} collisions"),
+    };
+    if let Some(t) = s.time {
+        return format!("{name} reached the goal at {} s{bumps}", fixed(t, 1));
+    }
+    let p = e.sim.pose;
+    let goal = e.sim.world.goal.map_or(String::new(), |g| {
+        format!(
+            ", {} m from the goal",
+            fixed((g.x - p.x).hypot(g.y - p.y), 1)
+        )
+    });
+    format!("{name} is {}{goal}{bumps}", e.activity)
+}
+
 impl LabWidget for ArchitectureArena {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         if let Some(problem) = &self.problem {

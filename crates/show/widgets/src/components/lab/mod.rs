@@ -17,7 +17,7 @@ use egui::RichText;
 use kinolab_common::Feedback;
 use kinolab_common::display::tidy_report;
 use kinolab_components::system::{EXAMPLES, System, example};
-use kinolab_components::{Action, Latency, Runtime};
+use kinolab_components::{Action, Latency, Runtime, Status};
 use serde::{Deserialize, Serialize};
 
 use self::run::LabRun;
@@ -514,7 +514,50 @@ fn statuses(ui: &mut egui::Ui, rt: &Runtime) {
     }
 }
 
+impl ComponentLab {
+    /// The system at the instant shown: the patterns its messages use,
+    /// and how many were sent, delivered and lost so far.
+    fn description(&self) -> String {
+        let name = match self.settings.task {
+            Some(Task::WireRobot) => "robot to wire",
+            None => self.settings.system.as_str(),
+        };
+        let Some(player) = &self.player else {
+            let why = self.problem.as_deref().unwrap_or_default();
+            return format!("The {name} system cannot run: {why}");
+        };
+        let run = player.peek();
+        let messages: Vec<_> = run
+            .rt
+            .trace()
+            .iter()
+            .filter(|r| !matches!(r.pattern, "wiring" | "state" | "note"))
+            .collect();
+        let mut patterns: Vec<&str> = messages.iter().map(|r| r.pattern).collect();
+        patterns.sort_unstable();
+        patterns.dedup();
+        let count = |s: Status| messages.iter().filter(|r| r.status == s).count();
+        format!(
+            "The {name} system at {} s: {} message{} sent ({}), {} delivered, {} lost.",
+            kinolab_common::display::fixed(player.time(), 2),
+            messages.len(),
+            if messages.len() == 1 { "" } else { "s" },
+            if patterns.is_empty() {
+                "none yet".to_owned()
+            } else {
+                patterns.join(", ")
+            },
+            count(Status::Delivered),
+            count(Status::Lost)
+        )
+    }
+}
+
 impl LabWidget for ComponentLab {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.controls(ui);
         if let Some(p) = &self.problem {

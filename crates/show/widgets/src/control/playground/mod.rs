@@ -227,7 +227,53 @@ impl Playground {
     }
 }
 
+impl Playground {
+    /// The gains and the tab shown; in one run, where the robot is at the
+    /// instant shown; elsewhere, what the gains promise.
+    fn description(&self) -> String {
+        use kinolab_common::display::fixed;
+        let [k_rho, k_alpha, k_beta] = self.set.gains;
+        let tab = TABS
+            .iter()
+            .find(|(v, _)| *v == self.set.view)
+            .map_or("", |(_, label)| label);
+        let gains = format!(
+            "Gains k_ρ = {}, k_α = {}, k_β = {} ({tab}).",
+            fixed(k_rho, 2),
+            fixed(k_alpha, 2),
+            fixed(k_beta, 2)
+        );
+        let run = self.run.as_ref().and_then(|r| r.as_ref().ok());
+        let now = run.and_then(|t| crate::control::field::at_time(&t.samples, self.time()));
+        let more = match (self.set.view, now) {
+            (View::Run, Some(s)) => {
+                let goal = settings::pose(self.set.goal);
+                let off = kinolab_common::angle::wrap(goal.theta - s.pose.theta);
+                format!(
+                    "At t = {} s the robot is {} m from the goal, its heading {}° off.",
+                    fixed(s.t, 2),
+                    fixed(s.polar.rho, 3),
+                    fixed(off.to_degrees().abs(), 1)
+                )
+            }
+            // The verdict's own sentence is on the page beside the gains.
+            _ => match self.set.gains().map(|g| g.stability()) {
+                Ok(s) if s.strongly_stable => "These gains are strongly stable.",
+                Ok(s) if s.locally_stable => "These gains are locally but not strongly stable.",
+                Ok(_) => "These gains are not stable.",
+                Err(_) => "These gains cannot be used.",
+            }
+            .to_owned(),
+        };
+        format!("{gains} {more}")
+    }
+}
+
 impl LabWidget for Playground {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         self.tab_bar(ui);
         self.gain_sliders(ui);

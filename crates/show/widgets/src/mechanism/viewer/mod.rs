@@ -420,6 +420,10 @@ struct LinkState {
 const VIEWS: [ViewKind; 3] = [ViewKind::Orbit, ViewKind::Plan, ViewKind::Side];
 
 impl LabWidget for Viewer {
+    fn describe(&self) -> Option<String> {
+        Some(self.description())
+    }
+
     fn ui(&mut self, ui: &mut egui::Ui) {
         if let Some(file) = open::take_dropped(ui.ctx()) {
             self.open_file(&file.name, &file.text());

@@ -231,15 +231,59 @@ impl Viewer {
         }
     }
 
+    /// Where the end frame is, in words.
+    pub(super) fn end_text(&self) -> Option<String> {
+        let (p, (name, _)) = (self.end_position()?, self.end.as_ref()?);
+        Some(format!(
+            "{name} at ({}, {}, {}) m",
+            fixed(p.x, 3),
+            fixed(p.y, 3),
+            fixed(p.z, 3)
+        ))
+    }
+
+    /// The mechanism, the joints driven (the first few) and where its end
+    /// frame is.
+    pub(super) fn description(&self) -> String {
+        const MOST: usize = 6;
+        let joints: Vec<String> = self
+            .driven
+            .iter()
+            .take(MOST)
+            .filter_map(|&v| {
+                let j = self.model.variable_joint(v)?;
+                let (unit, digits) = match j.kind {
+                    JointKind::Prismatic => (" m", 3),
+                    _ => ("°", 1),
+                };
+                let value = to_shown(&self.model, v, self.q[v]);
+                Some(format!("{} {}{unit}", j.name, fixed(value, digits)))
+            })
+            .collect();
+        let more = self.driven.len().saturating_sub(MOST);
+        let more = if more > 0 {
+            format!(" and {more} more")
+        } else {
+            String::new()
+        };
+        let end = self
+            .end_text()
+            .map_or(String::new(), |t| format!(" The {t}."));
+        format!(
+            "{}: {}{more}.{end}",
+            self.model.name(),
+            if joints.is_empty() {
+                "no joint to drive".to_owned()
+            } else {
+                joints.join(", ")
+            }
+        )
+    }
+
     pub(super) fn readout(&self, ui: &mut egui::Ui) {
         let mut lines = Vec::new();
-        if let (Some(p), Some((name, f))) = (self.end_position(), &self.end) {
-            lines.push(format!(
-                "{name} at ({}, {}, {}) m",
-                fixed(p.x, 3),
-                fixed(p.y, 3),
-                fixed(p.z, 3)
-            ));
+        if let (Some(text), Some((name, f))) = (self.end_text(), &self.end) {
+            lines.push(text);
             let spotting = matches!(
                 self.exercise.as_ref().map(|e| &e.task),
                 Some(Task::SpotSingular { .. })
