@@ -48,6 +48,12 @@ fn main() {
             kinolab_app::web::show_fatal("The page has no canvas with id kinolab-canvas.");
             return;
         };
+        if let Err(e) = kinolab_app::web::assets::load().await {
+            kinolab_app::web::show_fatal(&format!(
+                "Kinolab could not load its lessons: {e}. Check your connection, then reload the page."
+            ));
+            return;
+        }
         let hash = kinolab_app::web::current_hash();
         let result = runner
             .start(

@@ -7,6 +7,7 @@ use crate::route::Page;
 use crate::shell::KinolabApp;
 
 pub mod a11y;
+pub mod assets;
 pub mod storage;
 
 /// How many recent frames' CPU times are kept for the benchmark.

@@ -1,70 +1,97 @@
-//! The lessons under `lessons/`, embedded when this crate is compiled, so
-//! the web build needs no server to fetch them. The Markdown is stored
-//! compressed and unpacked once, on first use.
+//! The lab's own lessons, the files under `lessons/`. Native builds embed
+//! them (the `embedded` feature: the command line, the JS package and the
+//! native window need no server); the web lab leaves them out of its wasm
+//! and its page hands them over, fetched beside the wasm, before the lab
+//! starts ([`provide`]).
 
 use std::sync::OnceLock;
 
 use crate::course::Course;
 use crate::error::LessonError;
+use crate::pack::LessonFiles;
 
-mod files {
-    include!(concat!(env!("OUT_DIR"), "/bundled_lessons.rs"));
+static PROVIDED: OnceLock<LessonFiles> = OnceLock::new();
+
+/// Hand over the lessons the page fetched; the first call wins.
+pub fn provide(files: LessonFiles) {
+    let _ = PROVIDED.set(files);
 }
 
-/// Every embedded Markdown file as `(path relative to lessons/, text)`.
-pub fn markdown_files() -> &'static [(&'static str, &'static str)] {
-    static FILES: OnceLock<Vec<(&'static str, &'static str)>> = OnceLock::new();
-    FILES.get_or_init(|| {
-        let text = unpacked();
-        files::MARKDOWN
-            .iter()
-            .map(|&(path, start, len)| (path, text.get(start..start + len).unwrap_or("")))
-            .collect()
-    })
+/// The lessons: those handed over, else the embedded ones.
+pub fn files() -> Option<&'static LessonFiles> {
+    PROVIDED.get().or_else(embedded)
 }
 
-/// The Markdown blob, unpacked once.
-fn unpacked() -> &'static str {
-    static TEXT: OnceLock<String> = OnceLock::new();
-    TEXT.get_or_init(|| {
-        let bytes = fdeflate::decompress_to_vec_bounded(files::PACKED, files::UNPACKED_LEN)
-            .unwrap_or_default();
-        String::from_utf8(bytes).unwrap_or_default()
-    })
+#[cfg(feature = "embedded")]
+fn embedded() -> Option<&'static LessonFiles> {
+    mod packed {
+        include!(concat!(env!("OUT_DIR"), "/bundled_lessons.rs"));
+    }
+    static FILES: OnceLock<LessonFiles> = OnceLock::new();
+    Some(FILES.get_or_init(|| LessonFiles::unpack(packed::PACKED).unwrap_or_default()))
 }
 
-/// Every embedded image as `(path relative to lessons/, bytes)`.
-pub fn images() -> &'static [(&'static str, &'static [u8])] {
-    files::IMAGES
+#[cfg(not(feature = "embedded"))]
+fn embedded() -> Option<&'static LessonFiles> {
+    None
 }
 
-/// The course built from the embedded lessons, with every image checked.
+/// Every Markdown file as `(path relative to lessons/, text)`.
+pub fn markdown_files() -> Vec<(&'static str, &'static str)> {
+    files().map(LessonFiles::markdown).unwrap_or_default()
+}
+
+/// The course the lessons make, with every image checked.
 pub fn course() -> Result<Course, LessonError> {
-    let course = Course::from_files(markdown_files().iter().copied())?;
-    let images: Vec<&str> = images().iter().map(|(path, _)| *path).collect();
-    course.check_images(&images)?;
-    Ok(course)
+    files()
+        .ok_or_else(|| LessonError::new("lessons", 0, "the lessons have not been loaded"))?
+        .course()
 }
 
-/// An embedded image's bytes, by its path relative to `lessons/`.
+/// An image's bytes, by its path relative to `lessons/`.
 pub fn image(path: &str) -> Option<&'static [u8]> {
-    images()
-        .iter()
-        .find_map(|(p, bytes)| (*p == path).then_some(*bytes))
+    files()?.image(path)
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "embedded"))]
 mod tests {
     use super::*;
 
     #[test]
     fn the_packed_lessons_unpack_to_the_files_on_disk() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../lessons");
-        assert!(!markdown_files().is_empty());
+        fn count(dir: &std::path::Path) -> usize {
+            let entries = std::fs::read_dir(dir).into_iter().flatten().flatten();
+            entries
+                .map(|e| match e.path() {
+                    p if p.is_dir() => count(&p),
+                    p => usize::from(p.extension().is_some_and(|x| x == "md")),
+                })
+                .sum()
+        }
+        let count = count(&root);
+        assert_eq!(markdown_files().len(), count);
         for (path, text) in markdown_files() {
             let on_disk = std::fs::read_to_string(root.join(path)).unwrap_or_default();
-            assert_eq!(*text, on_disk, "{path}");
+            assert_eq!(text, on_disk, "{path}");
         }
+    }
+
+    /// The web page's pack (written by `web/pack-lessons.mjs`) holds the
+    /// very files the native build embeds.
+    #[test]
+    fn the_web_pack_holds_the_files_the_build_embeds() {
+        let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let dir = std::env::temp_dir().join(format!("kinolab-pack-{}", std::process::id()));
+        let status = std::process::Command::new("node")
+            .arg(here.join("../../../web/pack-lessons.mjs"))
+            .arg(&dir)
+            .status()
+            .expect("node runs (the web build needs it too)");
+        assert!(status.success());
+        let packed = std::fs::read(dir.join("lessons.pack")).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(Some(&LessonFiles::unpack(&packed).unwrap()), files());
     }
 
     /// A lesson speaks to a learner who has only the lab: never of the
