@@ -40,6 +40,17 @@ pub fn touch_screen() -> bool {
     window().is_some_and(|w| w.navigator().max_touch_points() > 0)
 }
 
+/// Whether the learner asked the system for less motion.
+pub fn reduced_motion() -> bool {
+    window()
+        .and_then(|w| {
+            w.match_media("(prefers-reduced-motion: reduce)")
+                .ok()
+                .flatten()
+        })
+        .is_some_and(|m| m.matches())
+}
+
 /// The browser's current hash, read fresh (not eframe's copy, which lags
 /// one event behind our own changes).
 pub fn current_hash() -> String {

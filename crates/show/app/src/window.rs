@@ -126,6 +126,10 @@ pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
         crate::web::storage::listen(&cc.egui_ctx);
         crate::web::a11y::install(&cc.egui_ctx);
     }
+    #[cfg(target_arch = "wasm32")]
+    if crate::web::reduced_motion() {
+        kinolab_widgets::theme::reduce_motion(&cc.egui_ctx);
+    }
     if touch {
         // A finger drag over text scrolls from the very first touch.
         kinolab_widgets::theme::touch_first(&cc.egui_ctx);

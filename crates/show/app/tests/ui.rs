@@ -778,6 +778,25 @@ fn a_wheel_drive_left_alone_pauses_itself() {
 }
 
 #[test]
+fn a_learner_who_asked_for_less_motion_sees_nothing_move_by_itself() {
+    let app = KinolabApp::new(None, "");
+    let builder = Harness::builder().with_size(egui::vec2(1280.0, 1600.0));
+    let mut h = lab(app, builder.with_step_dt(0.05).with_max_steps(40));
+    kinolab_widgets::theme::reduce_motion(&h.ctx);
+    h.state_mut().follow_hash("#/gallery/wheel-drive");
+    // The drive waits for Run, so the page asks for no frames at all.
+    h.run_ok().expect("the page rests at once");
+    assert!(h.query_by_label("Run").is_some());
+    for theme in [egui::Theme::Dark, egui::Theme::Light] {
+        assert_eq!(h.ctx.style_of(theme).animation_time, 0.0);
+    }
+    // Run drives, as for anyone.
+    h.get_by_label("Run").click();
+    h.run_steps(3);
+    assert!(h.ctx.has_requested_repaint());
+}
+
+#[test]
 fn a_screen_reader_hears_formulas_in_words() {
     // "A wheel of radius $r$ spinning at $\dot\varphi$ … forward at
     // $r\dot\varphi$": each formula is in the accessibility tree as words.

@@ -161,6 +161,27 @@ pub fn install(ctx: &egui::Context) {
     readable_text(ctx);
 }
 
+/// The learner asked for less motion (the system's "reduce motion", the
+/// browser's `prefers-reduced-motion`): egui's own animations (menus
+/// opening, scrolling to a place) end at once, and nothing starts moving by
+/// itself (the wheel drive waits for Run).
+pub fn reduce_motion(ctx: &egui::Context) {
+    for theme in [egui::Theme::Dark, egui::Theme::Light] {
+        ctx.style_mut_of(theme, |style| style.animation_time = 0.0);
+    }
+    ctx.data_mut(|d| d.insert_temp(reduce_motion_id(), true));
+}
+
+/// Whether [`reduce_motion`] was asked for.
+pub fn motion_reduced(ctx: &egui::Context) -> bool {
+    ctx.data(|d| d.get_temp::<bool>(reduce_motion_id()))
+        .unwrap_or(false)
+}
+
+fn reduce_motion_id() -> egui::Id {
+    egui::Id::unique("kinolab-reduce-motion")
+}
+
 /// WCAG's minimum contrast for text (1.4.3, level AA).
 pub const TEXT_CONTRAST: f32 = 4.5;
 

@@ -38,9 +38,24 @@ impl Handle {
     }
 }
 
-/// How far one press of an arrow key moves a focused handle, points
-/// (Shift: a tenth of it).
-const KEY_STEP: f32 = 10.0;
+/// How far one press of an arrow key moves a focused handle, points, and
+/// how many times further with Shift held.
+const KEY_STEP: f32 = 4.0;
+const SHIFT_STEPS: f32 = 8.0;
+
+/// The arrow keys pressed this frame as a direction on the screen (right
+/// and down positive), one unit per press.
+pub fn arrows(input: &egui::InputState) -> Vec2 {
+    [
+        (egui::Key::ArrowLeft, vec2(-1.0, 0.0)),
+        (egui::Key::ArrowRight, vec2(1.0, 0.0)),
+        (egui::Key::ArrowUp, vec2(0.0, -1.0)),
+        (egui::Key::ArrowDown, vec2(0.0, 1.0)),
+    ]
+    .into_iter()
+    .filter(|(key, _)| input.key_pressed(*key))
+    .fold(Vec2::ZERO, |sum, (_, dir)| sum + dir)
+}
 
 /// A round handle of `radius` points at `at`, named `label` for assistive
 /// technology (for example "Goal heading"). Drag it, or focus it with Tab
@@ -54,25 +69,13 @@ pub fn handle(ui: &mut egui::Ui, id: Id, at: Pos2, radius: f32, label: &str) -> 
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Slider, true, name.clone()));
     let mut moved = response.drag_delta();
     if response.has_focus() {
-        moved += ui.input(|i| {
-            let step = if i.modifiers.shift {
-                KEY_STEP / 10.0
+        let (arrows, shift) = ui.input(|i| (arrows(i), i.modifiers.shift));
+        moved += arrows
+            * if shift {
+                KEY_STEP * SHIFT_STEPS
             } else {
                 KEY_STEP
             };
-            let mut d = Vec2::ZERO;
-            for (key, dir) in [
-                (egui::Key::ArrowLeft, vec2(-1.0, 0.0)),
-                (egui::Key::ArrowRight, vec2(1.0, 0.0)),
-                (egui::Key::ArrowUp, vec2(0.0, -1.0)),
-                (egui::Key::ArrowDown, vec2(0.0, 1.0)),
-            ] {
-                if i.key_pressed(key) {
-                    d += dir * step;
-                }
-            }
-            d
-        });
     }
     if response.has_focus() {
         ui.painter().circle_stroke(

@@ -62,6 +62,12 @@ pub struct Camera {
     pub extent: f64,
 }
 
+/// What one key press does to a focused view: radians of orbit, points of
+/// pan, the zoom factor.
+const KEY_TURN: f32 = 0.1;
+const KEY_PAN: f32 = 20.0;
+const KEY_ZOOM: f32 = 1.25;
+
 impl Camera {
     pub fn new(kind: ViewKind, centre: [f64; 3], extent: f64) -> Self {
         Self {
@@ -129,9 +135,20 @@ impl Camera {
     }
 
     /// Orbit with a primary drag, pan with a secondary drag or with Shift,
-    /// zoom with Ctrl + wheel or a pinch. Returns whether anything changed.
+    /// zoom with Ctrl + wheel or a pinch. With the view focused (Tab, or a
+    /// click), the keyboard does the same: arrows orbit, Shift + arrows
+    /// pan, + and − zoom. Returns whether anything changed.
     pub fn handle(&mut self, ui: &egui::Ui, response: &Response, orbit_allowed: bool) -> bool {
         let before = *self;
+        if response.clicked() {
+            response.request_focus();
+        }
+        if response.has_focus() {
+            self.keyboard(ui, orbit_allowed);
+            let focus = ui.visuals().selection.stroke;
+            ui.painter()
+                .rect_stroke(response.rect, 2.0, focus, egui::StrokeKind::Inside);
+        }
         let shift = ui.input(|i| i.modifiers.shift);
         if response.dragged_by(egui::PointerButton::Secondary)
             || (response.dragged_by(egui::PointerButton::Primary)
@@ -150,6 +167,30 @@ impl Camera {
             }
         }
         *self != before
+    }
+
+    /// The keyboard's orbit, pan and zoom on a focused view.
+    fn keyboard(&mut self, ui: &egui::Ui, orbit_allowed: bool) {
+        let (arrows, shift, zoom_in, zoom_out) = ui.input(|i| {
+            (
+                super::handle::arrows(i),
+                i.modifiers.shift,
+                i.key_pressed(egui::Key::Plus) || i.key_pressed(egui::Key::Equals),
+                i.key_pressed(egui::Key::Minus),
+            )
+        });
+        if shift || !orbit_allowed || self.kind != ViewKind::Orbit {
+            self.pan += arrows * KEY_PAN;
+        } else {
+            self.yaw += arrows.x * KEY_TURN;
+            self.pitch = (self.pitch + arrows.y * KEY_TURN).clamp(-1.5, 1.5);
+        }
+        let factor = match (zoom_in, zoom_out) {
+            (true, false) => KEY_ZOOM,
+            (false, true) => 1.0 / KEY_ZOOM,
+            _ => 1.0,
+        };
+        self.zoom = (self.zoom * factor).clamp(0.2, 8.0);
     }
 
     /// Zoom buttons and a reset, for those without a wheel or touchpad.
@@ -272,6 +313,36 @@ fn grid_centre(camera: &Camera, rect: Rect, step: f64) -> ([f64; 2], i32) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_focused_view_turns_pans_and_zooms_from_the_keyboard() {
+        let start = Camera::new(ViewKind::Orbit, [0.0, 0.0, 0.0], 1.0);
+        let mut h = egui_kittest::Harness::new_ui_state(
+            |ui, (camera, focused): &mut (Camera, bool)| {
+                let sense = egui::Sense::click_and_drag();
+                let (_, response) = ui.allocate_exact_size(vec2(300.0, 200.0), sense);
+                if !*focused {
+                    response.request_focus();
+                    *focused = true;
+                }
+                camera.handle(ui, &response, true);
+            },
+            (start, false),
+        );
+        h.run();
+        h.key_press(egui::Key::ArrowRight);
+        h.run();
+        let turned = h.state().0;
+        assert!((turned.yaw - (start.yaw + KEY_TURN)).abs() < 1e-6);
+        assert_eq!(turned.pan, start.pan);
+        h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::ArrowDown);
+        h.run();
+        assert_eq!(h.state().0.pan, start.pan + vec2(0.0, KEY_PAN));
+        assert_eq!(h.state().0.yaw, turned.yaw);
+        h.key_press(egui::Key::Plus);
+        h.run();
+        assert!((h.state().0.zoom - start.zoom * KEY_ZOOM).abs() < 1e-6);
+    }
 
     #[test]
     fn a_panned_plan_view_keeps_its_grid_under_the_middle() {

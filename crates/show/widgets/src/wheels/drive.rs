@@ -70,6 +70,9 @@ struct Drive {
     pose: [f64; 3],
     trail: VecDeque<[f64; 2]>,
     running: bool,
+    /// The first frame has been drawn (a learner who asked for less motion
+    /// starts with the drive paused).
+    shown: bool,
     /// Seconds driven since the learner last changed anything.
     unattended: f64,
 }
@@ -110,6 +113,7 @@ impl Drive {
             pose: [0.0, 0.0, 0.0],
             trail: VecDeque::new(),
             running: true,
+            shown: false,
             unattended: 0.0,
         };
         if drive.settings.mode == Mode::Wheels && drive.settings.spins.is_none() {
@@ -568,6 +572,10 @@ impl LabWidget for Drive {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui) {
+        if !self.shown {
+            self.shown = true;
+            self.running = !theme::motion_reduced(ui.ctx());
+        }
         let before = self.settings.clone();
         self.controls(ui);
         let width = ui.available_width().min(900.0);
