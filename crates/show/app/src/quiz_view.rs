@@ -274,7 +274,9 @@ fn option_control(
         ui.vertical(|ui| inline_ui(ui, option, theme::BODY_SIZE, false, navigate));
         response.clicked()
     });
-    let text = row.response.interact(egui::Sense::click());
+    // Clickable, not a second tab stop: the keyboard reaches the option
+    // through its radio button or check box.
+    let text = row.response.interact(egui::Sense::CLICK);
     if text.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::PointingHand);
     }

@@ -73,6 +73,48 @@ fn a_right_answer_is_praised_and_explained() {
     assert_eq!(record.attempts, 1);
 }
 
+/// Press Tab until the node `is_it` finds has the keyboard focus; whether
+/// it got there within a page's worth of controls.
+fn tab_to(
+    h: &mut Harness<'static, KinolabApp>,
+    is_it: impl Fn(&Harness<'static, KinolabApp>) -> bool,
+) -> bool {
+    for _ in 0..300 {
+        if is_it(h) {
+            return true;
+        }
+        h.key_press(egui::Key::Tab);
+        h.run();
+    }
+    false
+}
+
+#[test]
+fn a_quiz_is_answered_with_the_keyboard_alone() {
+    let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));
+    let option = "A palletising arm fed by a conveyor inside a fenced cell";
+    let focused = |h: &Harness<'static, KinolabApp>, node: egui_kittest::Node<'_>| {
+        let _ = h;
+        node.accesskit_node().is_focused()
+    };
+    assert!(
+        tab_to(&mut h, |h| focused(h, radio(h, option))),
+        "Tab never reaches the option"
+    );
+    h.key_press(egui::Key::Space);
+    h.run();
+    let check = |h: &Harness<'static, KinolabApp>| {
+        h.get_all_by_label("Check answer")
+            .next()
+            .is_some_and(|b| b.accesskit_node().is_focused())
+    };
+    assert!(tab_to(&mut h, check), "Tab never reaches Check answer");
+    h.key_press(egui::Key::Enter);
+    h.run();
+    h.get_by_label("Right.");
+    assert!(h.state().progress().quizzes[&format!("{LESSON}#0")].correct);
+}
+
 #[test]
 fn a_wrong_answer_is_flagged_then_can_be_corrected() {
     let mut h = harness(KinolabApp::new(None, &format!("#/{LESSON}")));

@@ -2,7 +2,7 @@
 //! The new widgets' exercises, driven the way a learner drives them, and
 //! graded right and wrong by the core.
 
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT as _, Queryable};
 
 mod common;
 
@@ -114,6 +114,54 @@ fn the_person_exercise_wants_fresh_plans() {
         .set_value_accesskit(2.0);
     h.run_steps(2);
     h.get_by_label("Check").click();
+    h.run_steps(2);
+    h.get_by_label_contains("without touching the walker");
+}
+
+type Host = egui_kittest::Harness<'static, common::Host>;
+
+/// Press Tab until the first node labelled `label` has the keyboard focus.
+fn tab_to(h: &mut Host, label: &str) {
+    for _ in 0..200 {
+        let focused = h
+            .get_all_by_label(label)
+            .next()
+            .is_some_and(|n| n.accesskit_node().is_focused());
+        if focused {
+            return;
+        }
+        h.key_press(egui::Key::Tab);
+        h.run_steps(1);
+    }
+    panic!("Tab never reaches {label:?}");
+}
+
+#[test]
+fn the_person_exercise_is_solved_with_the_keyboard_alone() {
+    let mut h = harness(widget(
+        "architecture-arena",
+        &[("task", "survive-the-person"), ("planning_cost", "12")],
+    ));
+    h.run_steps(3);
+    // The slider's arrows lower the planning cost to 2 ms per cell.
+    let cost = "planning cost (ms/cell)";
+    tab_to(&mut h, cost);
+    let value = |h: &Host| {
+        h.get_all_by_label(cost)
+            .next()
+            .and_then(|n| n.accesskit_node().numeric_value())
+            .unwrap()
+    };
+    for _ in 0..200 {
+        if value(&h) <= 2.0 {
+            break;
+        }
+        h.key_press(egui::Key::ArrowLeft);
+        h.run_steps(1);
+    }
+    assert!(value(&h) <= 2.0, "the arrows stop at {}", value(&h));
+    tab_to(&mut h, "Check");
+    h.key_press(egui::Key::Enter);
     h.run_steps(2);
     h.get_by_label_contains("without touching the walker");
 }
