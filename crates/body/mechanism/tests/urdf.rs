@@ -320,3 +320,16 @@ fn the_models_variables_follow_the_file_order() {
     assert_eq!(names, ["early", "late"]);
     assert_eq!(r.driven().collect::<Vec<_>>(), ["late", "early"]);
 }
+
+#[test]
+fn the_catalogue_unpacks_the_very_files_shipped() {
+    for (id, file) in [
+        ("ur5", "ur5"),
+        ("panda-urdf", "panda"),
+        ("solo12", "solo12"),
+    ] {
+        let on_disk = urdf::read(&robot_file(file)).expect("a shipped file reads");
+        let built_in = kinolab_mechanism::catalogue::mechanism(id).expect("the catalogue reads");
+        assert_eq!(built_in, on_disk.model, "{id}");
+    }
+}

@@ -77,8 +77,18 @@ pub const CATALOGUE: &[(&str, &str, &str)] = &[
 
 /// A robot from a URDF file shipped with the lab (see the README for
 /// their licences).
-fn shipped(text: &str) -> Result<Model, FieldError> {
-    crate::urdf::read(text).map(|robot| robot.model)
+fn shipped(packed: &[u8]) -> Result<Model, FieldError> {
+    let damaged = || FieldError::new("model", "the shipped robot file is damaged");
+    let bytes = fdeflate::decompress_to_vec(packed).map_err(|_| damaged())?;
+    let text = String::from_utf8(bytes).map_err(|_| damaged())?;
+    crate::urdf::read(&text).map(|robot| robot.model)
+}
+
+/// A URDF file from `robots/`, deflated by `build.rs`.
+macro_rules! packed {
+    ($name:literal) => {
+        include_bytes!(concat!(env!("OUT_DIR"), "/", $name, ".urdf.zlib"))
+    };
 }
 
 /// A built-in mechanism by id.
@@ -93,9 +103,9 @@ pub fn mechanism(id: &str) -> Result<Model, FieldError> {
         "rover-arm" => rigs::rover_arm(),
         "hexapod" => rigs::hexapod(),
         "four-bar" => rigs::four_bar(rigs::FOUR_BAR),
-        "ur5" => shipped(include_str!("../../robots/ur5.urdf")),
-        "panda-urdf" => shipped(include_str!("../../robots/panda.urdf")),
-        "solo12" => shipped(include_str!("../../robots/solo12.urdf")),
+        "ur5" => shipped(packed!("ur5")),
+        "panda-urdf" => shipped(packed!("panda")),
+        "solo12" => shipped(packed!("solo12")),
         other => {
             let known: Vec<&str> = CATALOGUE.iter().map(|(id, _, _)| *id).collect();
             Err(FieldError::new(
