@@ -345,6 +345,21 @@ try {
       assert.ok(await reader.getByRole("heading").count() >= 2, `${address}: headings`);
       assert.ok(await reader.locator('#kinolab-a11y [role="radio"], #kinolab-a11y [role="checkbox"]').count() >= 1, `${address}: quiz options`);
     }
+    // The code editor is a real text field in the mirror: it reads the
+    // starter code, and an edit typed there reaches the lab (the code goes
+    // into the address, as an edit on the canvas does).
+    const coding = "motion-control/programming-the-robot";
+    await reader.goto(`${server.url}#/${coding}`);
+    await waitForPage(reader, coding);
+    const editor = reader.locator("#kinolab-a11y textarea").first();
+    await editor.waitFor({ state: "attached", timeout: 10_000 });
+    assert.match(await editor.inputValue(), /fn \w+\(/, "the starter code");
+    const edited = `${await editor.inputValue()}\n// typed through the screen reader\n`;
+    await editor.fill(edited);
+    await reader.waitForFunction(() => location.hash.includes("?w"), null, { timeout: 10_000 });
+    await reader.locator("#kinolab-a11y-on").focus();
+    await reader.waitForTimeout(300);
+    assert.equal(await editor.inputValue(), edited, "the lab's text, back in the field");
     await reader.close();
   });
 

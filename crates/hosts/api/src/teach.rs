@@ -74,14 +74,7 @@ pub struct CheckLesson {
 impl Operation for CheckLesson {
     type Report = LessonSummary;
     fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
-        let (meta, blocks) =
-            kinolab_lessons::parse_lesson(&self.file, &self.markdown).map_err(lessons_error)?;
-        let lesson = Lesson {
-            slug: String::new(),
-            file: self.file.clone(),
-            meta,
-            blocks,
-        };
+        let lesson = Lesson::from_markdown(&self.file, &self.markdown).map_err(lessons_error)?;
         kinolab_schema::check_lesson(&self.file, &lesson).map_err(lessons_error)?;
         Ok(LessonSummary::of(self.file.clone(), &lesson))
     }

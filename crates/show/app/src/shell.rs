@@ -84,7 +84,7 @@ impl KinolabApp {
     pub fn new(stored_progress: Option<&str>, hash: &str) -> Self {
         let (progress, notice) = Progress::restore(stored_progress);
         let mut app = Self {
-            course: kinolab_lessons::bundled::course(),
+            course: kinolab_lessons::bundled::outline(),
             page: Page::Home,
             progress,
             progress_dirty: notice.is_some(),
@@ -571,7 +571,12 @@ impl KinolabApp {
             images: &mut self.images,
             navigate: &mut navigate,
         };
-        blocks_ui(ui, &lesson.blocks, &mut state);
+        match lesson.blocks() {
+            Ok(blocks) => blocks_ui(ui, blocks, &mut state),
+            Err(e) => {
+                ui.colored_label(kinolab_widgets::theme::error_color(ui), e.to_string());
+            }
+        }
         ui.add_space(16.0);
         ui.separator();
         let (previous, next) = course.neighbours(address);

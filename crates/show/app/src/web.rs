@@ -66,6 +66,13 @@ pub fn kinolab_frame_times() -> Vec<f32> {
     FRAME_MS.with_borrow_mut(|f| f.drain(..).collect())
 }
 
+/// The size of the lab's wasm memory in bytes: its heap, stack and data
+/// (`window.wasmBindings.kinolab_heap_bytes()`, read by `cargo xtask bench`).
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn kinolab_heap_bytes() -> f64 {
+    (core::arch::wasm32::memory_size(0) * 65536) as f64
+}
+
 /// Follow the back and forward buttons and edited URLs; note the last
 /// frame's CPU time.
 pub fn before_frame(app: &mut KinolabApp, frame: &eframe::Frame) {

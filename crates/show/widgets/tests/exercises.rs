@@ -125,8 +125,7 @@ fn tab_to(h: &mut Host, label: &str) {
     for _ in 0..200 {
         let focused = h
             .get_all_by_label(label)
-            .next()
-            .is_some_and(|n| n.accesskit_node().is_focused());
+            .any(|n| n.accesskit_node().is_focused());
         if focused {
             return;
         }
@@ -285,6 +284,28 @@ fn the_wiring_task_is_checked_by_running_the_robot() {
     h.get_by_label("Check").click();
     h.run_steps(2);
     h.get_by_label_contains("Still unwired: planner.map, motion.velocity, sequencer.goal");
+}
+
+#[test]
+fn the_robot_is_wired_with_the_keyboard_alone() {
+    let mut h = harness(widget("component-lab", &[("task", "wire-robot")]));
+    h.run_steps(3);
+    // Each wiring: open the port list, choose the port, open the service
+    // list, choose the service; Tab moves, Enter opens and chooses.
+    for (port, service) in [
+        ("planner.map", "mapper.map"),
+        ("motion.velocity", "base.velocity"),
+    ] {
+        for item in ["port", port, "wire it to", service] {
+            tab_to(&mut h, item);
+            h.key_press(egui::Key::Enter);
+            h.run_steps(2);
+        }
+    }
+    tab_to(&mut h, "Check");
+    h.key_press(egui::Key::Enter);
+    h.run_steps(2);
+    h.get_by_label_contains("Still unwired: sequencer.goal");
 }
 
 #[test]

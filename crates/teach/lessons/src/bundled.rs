@@ -41,11 +41,19 @@ pub fn markdown_files() -> Vec<(&'static str, &'static str)> {
     files().map(LessonFiles::markdown).unwrap_or_default()
 }
 
-/// The course the lessons make, with every image checked.
+/// The course the lessons make, every body parsed and every image checked.
 pub fn course() -> Result<Course, LessonError> {
-    files()
-        .ok_or_else(|| LessonError::new("lessons", 0, "the lessons have not been loaded"))?
-        .course()
+    loaded()?.course()
+}
+
+/// The course as the lab opens it: each lesson's body parsed when it is
+/// first shown, so the first page does not wait for every lesson.
+pub fn outline() -> Result<Course, LessonError> {
+    loaded()?.outline()
+}
+
+fn loaded() -> Result<&'static LessonFiles, LessonError> {
+    files().ok_or_else(|| LessonError::new("lessons", 0, "the lessons have not been loaded"))
 }
 
 /// An image's bytes, by its path relative to `lessons/`.

@@ -1,11 +1,15 @@
 //! Units and lessons put together into a course, with their addresses.
 
+use std::sync::OnceLock;
+
 use crate::document::{Block, Span};
 use crate::error::LessonError;
-use crate::front_matter::FrontMatter;
-use crate::parse::{parse_lesson, parse_unit};
+use crate::front_matter::{self, FrontMatter, Required};
+use crate::parse::{parse_body, parse_unit};
 
-/// One lesson, ready to render.
+/// One lesson: its address, file and front matter at once, its body
+/// parsed the first time it is asked for (so a course of fifty lessons
+/// opens without parsing fifty bodies; [`Course::check`] parses them all).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lesson {
     /// Address part, e.g. `open-and-closed-worlds`.
@@ -13,7 +17,49 @@ pub struct Lesson {
     /// The file it was read from, relative to the lessons folder.
     pub file: String,
     pub meta: FrontMatter,
-    pub blocks: Vec<Block>,
+    body: Body,
+}
+
+/// A lesson's Markdown after its front matter, and what it parses to.
+#[derive(Debug, Clone, PartialEq)]
+struct Body {
+    text: String,
+    first_line: usize,
+    parsed: OnceLock<Result<Vec<Block>, LessonError>>,
+}
+
+impl Lesson {
+    /// A lesson read from its file's text: the front matter now, the body
+    /// when it is first asked for.
+    fn read(slug: String, file: &str, source: &str) -> Result<Self, LessonError> {
+        let (meta, text, first_line) = front_matter::split(file, source, Required::Lesson)?;
+        Ok(Self {
+            slug,
+            file: file.to_owned(),
+            meta,
+            body: Body {
+                text,
+                first_line,
+                parsed: OnceLock::new(),
+            },
+        })
+    }
+
+    /// One lesson file on its own (outside a course, without an address),
+    /// its body parsed and checked.
+    pub fn from_markdown(file: &str, source: &str) -> Result<Self, LessonError> {
+        let lesson = Self::read(String::new(), file, source)?;
+        lesson.blocks().map_err(Clone::clone)?;
+        Ok(lesson)
+    }
+
+    /// The lesson's blocks, or why its body does not parse.
+    pub fn blocks(&self) -> Result<&[Block], &LessonError> {
+        let body = &self.body;
+        body.parsed
+            .get_or_init(|| parse_body(&self.file, &body.text, body.first_line))
+            .as_deref()
+    }
 }
 
 /// A unit: a titled, ordered group of lessons.
@@ -59,10 +105,29 @@ pub fn image_path(lesson_file: &str, url: &str) -> String {
 
 impl Course {
     /// Build a course from `(path, text)` pairs, paths relative to the
-    /// lessons folder (`01-automation/02-ways-to-move.md`). Files are ordered
-    /// by path; each unit folder needs a `unit.md`. Files outside a unit
-    /// folder (such as the authors' README) are ignored.
+    /// lessons folder (`01-automation/02-ways-to-move.md`), every lesson's
+    /// body parsed and checked. Files are ordered by path; each unit folder
+    /// needs a `unit.md`. Files outside a unit folder (such as the authors'
+    /// README) are ignored.
     pub fn from_files<'a>(
+        files: impl IntoIterator<Item = (&'a str, &'a str)>,
+    ) -> Result<Course, LessonError> {
+        let course = Self::outline(files)?;
+        course.check()?;
+        Ok(course)
+    }
+
+    /// Parse every lesson's body; the first that does not parse says why.
+    pub fn check(&self) -> Result<(), LessonError> {
+        for lesson in self.units.iter().flat_map(|u| &u.lessons) {
+            lesson.blocks().map_err(Clone::clone)?;
+        }
+        Ok(())
+    }
+
+    /// As [`Course::from_files`], with each lesson's body left to be
+    /// parsed when it is first shown: what the lab does as it starts.
+    pub fn outline<'a>(
         files: impl IntoIterator<Item = (&'a str, &'a str)>,
     ) -> Result<Course, LessonError> {
         let mut files: Vec<(&str, &str)> = files
@@ -101,7 +166,6 @@ impl Course {
                 unit.title = title;
                 unit.summary = summary;
             } else {
-                let (meta, blocks) = parse_lesson(path, text)?;
                 let slug = address_part(name);
                 if unit.lessons.iter().any(|l| l.slug == slug) {
                     return Err(LessonError::new(
@@ -110,12 +174,7 @@ impl Course {
                         format!("two lessons in this unit share the address `{slug}`"),
                     ));
                 }
-                unit.lessons.push(Lesson {
-                    slug,
-                    file: path.to_owned(),
-                    meta,
-                    blocks,
-                });
+                unit.lessons.push(Lesson::read(slug, path, text)?);
             }
         }
         if let Some(unit) = course.units.iter().find(|u| u.title.is_empty()) {
@@ -133,7 +192,8 @@ impl Course {
     pub fn check_images(&self, available: &[&str]) -> Result<(), LessonError> {
         for lesson in self.units.iter().flat_map(|u| &u.lessons) {
             let mut missing = None;
-            crate::summary::visit(&lesson.blocks, &mut |block| {
+            let blocks = lesson.blocks().map_err(Clone::clone)?;
+            crate::summary::visit(blocks, &mut |block| {
                 let spans = match block {
                     Block::Paragraph(spans) | Block::Heading { text: spans, .. } => spans,
                     _ => return,

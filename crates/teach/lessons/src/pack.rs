@@ -68,6 +68,11 @@ impl LessonFiles {
         course.check_images(&images)?;
         Ok(course)
     }
+
+    /// The course these files make, each body parsed when first shown.
+    pub fn outline(&self) -> Result<Course, LessonError> {
+        Course::outline(self.markdown())
+    }
 }
 
 /// One file at the start of `bytes`: its path, its body and what follows.

@@ -45,7 +45,11 @@ fn options() -> Options {
 }
 
 /// Parse Markdown that starts on file line `first_line`.
-fn parse_body(file: &str, body: &str, first_line: usize) -> Result<Vec<Block>, LessonError> {
+pub(crate) fn parse_body(
+    file: &str,
+    body: &str,
+    first_line: usize,
+) -> Result<Vec<Block>, LessonError> {
     let events: Vec<(Event<'_>, Range<usize>)> = Markdown::new_ext(body, options())
         .into_offset_iter()
         .collect();

@@ -30,11 +30,16 @@ impl LessonSummary {
     pub fn of(address: String, lesson: &Lesson) -> Self {
         let mut quizzes = 0;
         let mut widgets = Vec::new();
-        visit(&lesson.blocks, &mut |block| match block {
-            Block::Quiz(_) => quizzes += 1,
-            Block::Widget(w) => widgets.push(w.name.clone()),
-            _ => {}
-        });
+        // A lesson whose body does not parse counts none (the checker
+        // reports it).
+        visit(
+            lesson.blocks().unwrap_or_default(),
+            &mut |block| match block {
+                Block::Quiz(_) => quizzes += 1,
+                Block::Widget(w) => widgets.push(w.name.clone()),
+                _ => {}
+            },
+        );
         Self {
             address,
             title: lesson.meta.title.clone(),

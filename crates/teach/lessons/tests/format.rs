@@ -313,6 +313,35 @@ fn a_unit_without_unit_md_is_an_error() {
 }
 
 #[test]
+fn an_outline_parses_a_body_when_it_is_first_shown() {
+    let unit = "---\ntitle: Unit A\n---\nSummary.\n";
+    let good = format!("{HEADER}One.\n");
+    // A quiz of an unknown kind, on the body's third line.
+    let bad = format!("{HEADER}Two.\n\n```quiz\nkind: poem\n```\n");
+    let files = [
+        ("01-first/unit.md", unit),
+        ("01-first/01-a.md", good.as_str()),
+        ("01-first/02-b.md", bad.as_str()),
+    ];
+    // The outline opens: front matter only.
+    let outline = Course::outline(files).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(outline.addresses(), vec!["first/a", "first/b"]);
+    let (_, a) = outline.lesson("first/a").unwrap();
+    assert_eq!(a.blocks().map(<[Block]>::len), Ok(1));
+    // The broken body says where when it is shown, and again when checked.
+    let (_, b) = outline.lesson("first/b").unwrap();
+    let shown = b.blocks().map_err(ToString::to_string).unwrap_err();
+    assert!(shown.starts_with("01-first/02-b.md:"), "{shown}");
+    assert_eq!(
+        outline.check().map_err(|e| e.to_string()),
+        Err(shown.clone())
+    );
+    // The checked course refuses it outright.
+    let checked = Course::from_files(files).map_err(|e| e.to_string());
+    assert_eq!(checked.unwrap_err(), shown);
+}
+
+#[test]
 fn every_bundled_lesson_parses_and_has_a_quiz() {
     let course = kinolab_lessons::bundled::course().unwrap_or_else(|e| panic!("{e}"));
     assert!(!course.units.is_empty());
@@ -324,7 +353,11 @@ fn every_bundled_lesson_parses_and_has_a_quiz() {
         );
         for lesson in &unit.lessons {
             assert!(
-                lesson.blocks.iter().any(|b| matches!(b, Block::Quiz(_))),
+                lesson
+                    .blocks()
+                    .unwrap_or_default()
+                    .iter()
+                    .any(|b| matches!(b, Block::Quiz(_))),
                 "{}/{} has no quiz",
                 unit.slug,
                 lesson.slug

@@ -7,7 +7,7 @@ use kinolab_lessons::{Block, Course, Lesson, LessonError};
 /// Check every widget block of `lesson` (from `file`).
 pub fn check_lesson(file: &str, lesson: &Lesson) -> Result<(), LessonError> {
     let mut first_error = None;
-    visit(&lesson.blocks, &mut |block| {
+    visit(lesson.blocks().map_err(Clone::clone)?, &mut |block| {
         if let Block::Widget(spec) = block
             && first_error.is_none()
             && let Err(message) = crate::validate(spec)

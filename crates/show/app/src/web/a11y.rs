@@ -13,7 +13,9 @@
 use std::cell::RefCell;
 use std::collections::{HashMap, HashSet};
 
-use egui::accesskit::{Action, ActionRequest, Node, NodeId, Role, Toggled, TreeId, TreeUpdate};
+use egui::accesskit::{
+    Action, ActionData, ActionRequest, Node, NodeId, Role, Toggled, TreeId, TreeUpdate,
+};
 use wasm_bindgen::JsCast as _;
 use wasm_bindgen::closure::Closure;
 
@@ -59,7 +61,7 @@ pub fn install(ctx: &egui::Context) {
         on.forget();
     }
     if let Some(container) = document.get_element_by_id(CONTAINER) {
-        for kind in ["click", "focusin", "keydown"] {
+        for kind in ["click", "focusin", "keydown", "input"] {
             let ctx = ctx.clone();
             let act = Closure::<dyn FnMut(web_sys::Event)>::new(move |e: web_sys::Event| {
                 if let Some(request) = request_for(&e) {
@@ -73,13 +75,21 @@ pub fn install(ctx: &egui::Context) {
     }
 }
 
-/// The egui action a page event on a mirrored element asks for.
+/// The egui action a page event on a mirrored element asks for. A text
+/// field's every edit hands egui its whole new text; the arrow keys in it
+/// move the caret, as they do in any text field.
 fn request_for(e: &web_sys::Event) -> Option<ActionRequest> {
     let target = e.target()?.dyn_into::<web_sys::Element>().ok()?;
     let node = target.get_attribute(NODE)?.parse().ok()?;
+    let mut data = None;
     let action = match e.type_().as_str() {
         "click" => Action::Click,
         "focusin" => Action::Focus,
+        "input" => {
+            data = Some(ActionData::Value(text_of(&target)?.into()));
+            Action::SetValue
+        }
+        "keydown" if text_of(&target).is_some() => return None,
         "keydown" => {
             let key = e.dyn_ref::<web_sys::KeyboardEvent>()?.key();
             match key.as_str() {
@@ -94,8 +104,35 @@ fn request_for(e: &web_sys::Event) -> Option<ActionRequest> {
         action,
         target_tree: TreeId::ROOT,
         target_node: NodeId(node),
-        data: None,
+        data,
     })
+}
+
+/// The text in a mirrored text field; `None` for any other element.
+fn text_of(element: &web_sys::Element) -> Option<String> {
+    if let Some(input) = element.dyn_ref::<web_sys::HtmlInputElement>() {
+        return Some(input.value());
+    }
+    element
+        .dyn_ref::<web_sys::HtmlTextAreaElement>()
+        .map(web_sys::HtmlTextAreaElement::value)
+}
+
+/// Show egui's text in a mirrored text field, unless the learner is typing
+/// in it (their caret stays where it is).
+fn set_text(element: &web_sys::Element, text: &str) {
+    let typing = super::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.active_element())
+        .is_some_and(|a| &a == element);
+    if typing || text_of(element).as_deref() == Some(text) {
+        return;
+    }
+    if let Some(input) = element.dyn_ref::<web_sys::HtmlInputElement>() {
+        input.set_value(text);
+    } else if let Some(area) = element.dyn_ref::<web_sys::HtmlTextAreaElement>() {
+        area.set_value(text);
+    }
 }
 
 struct Plugin;
@@ -241,6 +278,9 @@ fn tag(role: Role) -> &'static str {
     match role {
         Role::Button | Role::Link | Role::CheckBox | Role::RadioButton | Role::ComboBox => "button",
         Role::Label | Role::Image => "span",
+        // Real text fields, so a screen reader edits them as it edits any.
+        Role::TextInput | Role::PasswordInput => "input",
+        Role::MultilineTextInput => "textarea",
         _ => "div",
     }
 }
@@ -256,7 +296,17 @@ fn describe(element: &web_sys::Element, id: NodeId, node: &Node, zoom: f64) {
     set(NODE, Some(id.0.to_string()));
     let role = node.role();
     set("role", aria_role(role).map(str::to_owned));
-    let name = node.label().or(node.value()).map(str::to_owned);
+    let field = matches!(tag(role), "input" | "textarea");
+    if field {
+        set_text(element, node.value().unwrap_or_default());
+    }
+    // A text field's value is its text, not its name.
+    let name = if field {
+        node.label()
+    } else {
+        node.label().or(node.value())
+    };
+    let name = name.map(str::to_owned);
     if matches!(role, Role::Label) {
         element.set_text_content(name.as_deref());
         set("aria-label", None);
@@ -321,7 +371,6 @@ fn aria_role(role: Role) -> Option<&'static str> {
         Role::ComboBox => "combobox",
         Role::Slider => "slider",
         Role::Heading => "heading",
-        Role::TextInput => "textbox",
         Role::Image => "img",
         // A widget, named by what it shows now.
         Role::Group => "group",

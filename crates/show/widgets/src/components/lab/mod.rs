@@ -339,10 +339,11 @@ impl ComponentLab {
             crate::widget::message_ui(ui, r, crate::theme::error_color(ui));
         }
         let rt = &player.state().rt;
+        let picked = pick_and_wire(ui, rt, &mut self.look.selected);
         let acted = port_panel(ui, rt, self.look.selected.as_deref());
         statuses(ui, rt);
         let sequence = sequence::show(ui, rt, self.look.window);
-        if let Some(action) = wired.or(acted) {
+        if let Some(action) = wired.or(picked).or(acted) {
             self.act(action);
         }
         Some(diagram.union(sequence))
@@ -435,11 +436,50 @@ fn trace_csv(trace: &[kinolab_components::Record]) -> String {
     out
 }
 
+/// The keyboard's way to do what a press and a drag do on the diagram:
+/// choose a port from a list, then the service to wire it to. A wiring
+/// the runtime refuses is refused here as it is after a drag.
+fn pick_and_wire(ui: &mut egui::Ui, rt: &Runtime, selected: &mut Option<String>) -> Option<Action> {
+    let views = rt.view();
+    let named = |c: &str, x: &str| format!("{c}.{x}");
+    let mut action = None;
+    ui.horizontal_wrapped(|ui| {
+        let shown = selected.as_deref().unwrap_or("choose one").to_owned();
+        egui::ComboBox::from_label("port")
+            .selected_text(shown)
+            .show_ui(ui, |ui| {
+                for c in &views {
+                    for p in &c.ports {
+                        let name = named(&c.name, &p.name);
+                        crate::widget::choose(ui, selected, Some(name.clone()), name);
+                    }
+                }
+            });
+        let Some(port) = selected.clone() else {
+            return;
+        };
+        egui::ComboBox::from_label("wire it to")
+            .selected_text("a service")
+            .show_ui(ui, |ui| {
+                for c in &views {
+                    for s in &c.services {
+                        let service = named(&c.name, &s.name);
+                        if ui.selectable_label(false, &service).clicked() {
+                            let port = port.clone();
+                            action = Some(Action::Connect { port, service });
+                        }
+                    }
+                }
+            });
+    });
+    action
+}
+
 /// The selected port: where it is wired, what it saw, why it is quiet,
 /// and the buttons that act on it.
 fn port_panel(ui: &mut egui::Ui, rt: &Runtime, selected: Option<&str>) -> Option<Action> {
     let Some(name) = selected else {
-        ui.label("Click a port (a circle on a box's left edge) to see it; drag it onto a service (a square on a box's right edge) to wire it.");
+        ui.label("Click a port (a circle on a box's left edge) to see it, or choose it above; drag it onto a service (a square on a box's right edge), or choose the service above, to wire it.");
         return None;
     };
     let (component, port) = name.split_once('.')?;

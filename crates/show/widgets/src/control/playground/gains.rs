@@ -166,7 +166,7 @@ impl Playground {
         }
         ui.label(
             RichText::new(format!(
-                "The plane at k_ρ = {}. Click or drag in it to pick k_α and k_β.",
+                "The plane at k_ρ = {}. Click or drag in it to pick k_α and k_β, or set them with their sliders above (the arrow keys move a focused slider).",
                 fixed(g.k_rho, 1)
             ))
             .small(),
