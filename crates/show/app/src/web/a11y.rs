@@ -279,7 +279,7 @@ fn tag(role: Role) -> &'static str {
         Role::Button | Role::Link | Role::CheckBox | Role::RadioButton | Role::ComboBox => "button",
         Role::Label | Role::Image => "span",
         // Real text fields, so a screen reader edits them as it edits any.
-        Role::TextInput | Role::PasswordInput => "input",
+        Role::TextInput => "input",
         Role::MultilineTextInput => "textarea",
         _ => "div",
     }

@@ -440,7 +440,8 @@ fn trace_csv(trace: &[kinolab_components::Record]) -> String {
 /// choose a port from a list, then the service to wire it to. A wiring
 /// the runtime refuses is refused here as it is after a drag.
 fn pick_and_wire(ui: &mut egui::Ui, rt: &Runtime, selected: &mut Option<String>) -> Option<Action> {
-    let views = rt.view();
+    // The lists are read only while open: the runtime's view is rebuilt
+    // for each call, and the lab draws many frames a second.
     let named = |c: &str, x: &str| format!("{c}.{x}");
     let mut action = None;
     ui.horizontal_wrapped(|ui| {
@@ -448,7 +449,7 @@ fn pick_and_wire(ui: &mut egui::Ui, rt: &Runtime, selected: &mut Option<String>)
         egui::ComboBox::from_label("port")
             .selected_text(shown)
             .show_ui(ui, |ui| {
-                for c in &views {
+                for c in &rt.view() {
                     for p in &c.ports {
                         let name = named(&c.name, &p.name);
                         crate::widget::choose(ui, selected, Some(name.clone()), name);
@@ -461,7 +462,7 @@ fn pick_and_wire(ui: &mut egui::Ui, rt: &Runtime, selected: &mut Option<String>)
         egui::ComboBox::from_label("wire it to")
             .selected_text("a service")
             .show_ui(ui, |ui| {
-                for c in &views {
+                for c in &rt.view() {
                     for s in &c.services {
                         let service = named(&c.name, &s.name);
                         if ui.selectable_label(false, &service).clicked() {
