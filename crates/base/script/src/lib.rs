@@ -16,7 +16,9 @@
 //! law, a behaviour or a coordinator, a potential-field primitive, the
 //! hybrid robot's sequencer, the hexapod's leg sequencer.
 
+mod collections;
 mod error;
+mod maths;
 mod sandbox;
 mod script;
 pub mod value;

@@ -1,15 +1,12 @@
 //! The engine every script runs in: the standard pieces a learner needs
-//! (arithmetic, logic, maths, strings, arrays, maps), `print` and `plot`
+//! (numbers, strings, lists and maps), `print` and `plot`
 //! kept per call, and the bounds.
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
 use rhai::Engine;
-use rhai::packages::{
-    ArithmeticPackage, BasicArrayPackage, BasicMapPackage, BasicMathPackage, BasicStringPackage,
-    CorePackage, LogicPackage, Package,
-};
+use rhai::packages::{BasicStringPackage, CorePackage, Package};
 
 /// What bounds every call of a learner's function.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -64,12 +61,9 @@ pub(crate) struct Budget {
 pub(crate) fn engine(sink: &Sink, budget: &Rc<Budget>) -> Engine {
     let mut e = Engine::new_raw();
     CorePackage::new().register_into_engine(&mut e);
-    ArithmeticPackage::new().register_into_engine(&mut e);
-    LogicPackage::new().register_into_engine(&mut e);
-    BasicMathPackage::new().register_into_engine(&mut e);
     BasicStringPackage::new().register_into_engine(&mut e);
-    BasicArrayPackage::new().register_into_engine(&mut e);
-    BasicMapPackage::new().register_into_engine(&mut e);
+    crate::maths::register(&mut e);
+    crate::collections::register(&mut e);
     e.set_max_operations(LIMITS.operations)
         .set_max_call_levels(LIMITS.call_depth)
         .set_max_expr_depths(64, 64)
@@ -78,7 +72,6 @@ pub(crate) fn engine(sink: &Sink, budget: &Rc<Budget>) -> Engine {
         .set_max_map_size(LIMITS.map)
         .set_max_variables(1_000)
         .set_max_functions(200);
-    same_maths(&mut e);
     joins_text(&mut e);
     let counted = budget.clone();
     e.on_progress(move |ops| {
@@ -152,24 +145,4 @@ fn joins_text(e: &mut Engine) {
         .register_fn("+", |x: i64, s: Text| join(x, s))
         .register_fn("+", |s: Text, x: bool| join(s, x))
         .register_fn("+", |x: bool, s: Text| join(x, s));
-}
-
-/// Trigonometry and the other transcendental functions from the lab's
-/// own maths library (the core's `trig`, `libm`): a script computes the
-/// same bits as the core, natively and in wasm, so a run replays the same
-/// everywhere. `atan2(y, x)` is added beside Rhai's `atan(y, x)`.
-fn same_maths(e: &mut Engine) {
-    use kinolab_common::trig;
-    e.register_fn("sin", trig::sin)
-        .register_fn("cos", trig::cos)
-        .register_fn("tan", trig::tan)
-        .register_fn("atan", |y: f64, x: f64| trig::atan2(y, x))
-        .register_fn("atan2", |y: f64, x: f64| trig::atan2(y, x))
-        .register_fn("atan", libm::atan)
-        .register_fn("asin", libm::asin)
-        .register_fn("acos", libm::acos)
-        .register_fn("exp", libm::exp)
-        .register_fn("ln", libm::log)
-        .register_fn("log10", libm::log10)
-        .register_fn("hypot", libm::hypot);
 }

@@ -18,7 +18,12 @@ pub fn numbers(xs: &[f64]) -> Dynamic {
 
 /// A map from names to values.
 pub fn map<'a>(entries: impl IntoIterator<Item = (&'a str, Dynamic)>) -> Dynamic {
-    let map: Map = entries.into_iter().map(|(k, v)| (k.into(), v)).collect();
+    // Inserted one by one: collecting would sort, and put a sort in the
+    // lab's wasm for every caller's iterator.
+    let mut map = Map::new();
+    for (k, v) in entries {
+        map.insert(k.into(), v);
+    }
     Dynamic::from_map(map)
 }
 

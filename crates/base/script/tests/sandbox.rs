@@ -241,3 +241,107 @@ fn trigonometry_is_the_cores_bit_for_bit() {
         assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "x = {x}");
     }
 }
+
+/// Runs `body` as `fn f() { … }` and prints what it returns.
+fn shown(body: &str) -> String {
+    let f = Signature {
+        name: "f",
+        params: &[],
+    };
+    let mut s =
+        Script::compile(&format!("fn f() {{ {body} }}"), f).unwrap_or_else(|e| panic!("{e}"));
+    match s.call(Vec::new(), 0.0) {
+        Ok(out) => out.value.to_string(),
+        Err(e) => format!("error: {e}"),
+    }
+}
+
+#[test]
+fn lists_and_maps_have_the_functions_a_learner_reaches_for() {
+    let cases = [
+        (
+            "let a = [1, 2]; a.push(3.5); [a.len(), a.pop(), a.len()]",
+            "[3, 3.5, 2]",
+        ),
+        (
+            "let a = [4, 5, 6]; let x = a.shift(); [x, a]",
+            "[4, [5, 6]]",
+        ),
+        (
+            "let a = [1, 3]; a.insert(1, 2); a.insert(-1, 9); a",
+            "[1, 2, 9, 3]",
+        ),
+        (
+            "let a = [1, 2, 3]; [a.remove(-1), a.remove(7), a]",
+            "[3, (), [1, 2]]",
+        ),
+        (
+            "let a = [1, 2.0, \"x\"]; [2 in a, \"x\" in a, 5 in a, a.index_of(\"x\")]",
+            "[true, true, false, 2]",
+        ),
+        (
+            "let a = []; for x in [1, 2, 3] { a.push(x * x); } a + [0]",
+            "[1, 4, 9, 0]",
+        ),
+        (
+            "let a = [1]; a += [2]; a.append([3]); [a, a == [1, 2, 3], a != [1, 2], [].is_empty()]",
+            "[[1, 2, 3], true, true, true]",
+        ),
+        (
+            "let a = [0]; a.pad(3, 7); a.clear(); [a.len(), a.pop(), a.shift()]",
+            "[0, (), ()]",
+        ),
+        (
+            "let m = #{x: 1, y: 2}; [m.len(), \"x\" in m, \"z\" in m, m.keys(), m.values()]",
+            "[2, true, false, [\"x\", \"y\"], [1, 2]]",
+        ),
+        (
+            "let m = #{x: 1, y: 2}; let x = m.remove(\"x\"); [x, m, m.remove(\"q\"), #{}.is_empty()]",
+            "[1, #{\"y\": 2}, (), true]",
+        ),
+        ("let m = #{x: 1}; m.clear(); m.len()", "0"),
+        (
+            "let x = 3; [-x, -2.5 < x, 1 < 2.0, !(x > 2), 7 % 3, 2 ** 3, 5 / 2, 5.0 / 2]",
+            "[-3, true, true, false, 1, 8, 2, 2.5]",
+        ),
+        (
+            "[abs(-3), sign(-0.5), sign(4), min(2, 0.5), max(1, 3), (2.7).floor(), ceiling(2.1)]",
+            "[3, -1, 1, 0.5, 3, 2.0, 3.0]",
+        ),
+        (
+            "[round(2.5), to_int(-2.7), to_float(3), (7).is_odd(), log(100.0), to_degrees(PI())]",
+            "[3.0, -2, 3.0, true, 2.0, 180.0]",
+        ),
+        (
+            "[abs(-2.5), min(1, 2), max(1.5, 0.5), sqrt(4.0), floor(2.7), PI() > 3.14]",
+            "[2.5, 1, 1.5, 2.0, 2.0, true]",
+        ),
+    ];
+    for (body, want) in cases {
+        assert_eq!(shown(body), want, "{body}");
+    }
+}
+
+#[test]
+fn numbers_that_do_not_fit_stop_with_an_overflow() {
+    for body in [
+        "abs(-9223372036854775807 - 1)",
+        "to_int(1e30)",
+        "9223372036854775807 + 1",
+    ] {
+        let shown = shown(body);
+        assert!(shown.to_lowercase().contains("overflow"), "{body}: {shown}");
+    }
+}
+
+#[test]
+fn reading_past_the_end_of_a_list_names_the_line() {
+    let f = Signature {
+        name: "f",
+        params: &[],
+    };
+    let mut s = Script::compile("fn f() {\n  let a = [1, 2, 3];\n  a[5]\n}", f).unwrap();
+    let e = s.call(Vec::new(), 0.0).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Runtime, "{e}");
+    assert_eq!(e.line, Some(3), "{e:?}");
+}

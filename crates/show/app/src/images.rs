@@ -21,32 +21,28 @@ impl std::fmt::Debug for ImageCache {
     }
 }
 
-/// Decode PNG bytes into an egui image.
+/// The largest lesson image, in pixels (a 4096 × 4096 image takes 64 MB).
+const LARGEST: usize = 4096 * 4096;
+
+/// Decode PNG bytes into an egui image: every colour type and bit depth,
+/// not interlaced.
 pub fn decode_png(bytes: &[u8]) -> Result<ColorImage, String> {
-    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
-    decoder.set_transformations(
-        png::Transformations::EXPAND | png::Transformations::STRIP_16 | png::Transformations::ALPHA,
-    );
-    let mut reader = decoder
-        .read_info()
-        .map_err(|e| format!("not a readable PNG: {e}"))?;
-    let mut buffer = vec![0; reader.output_buffer_size().ok_or("the PNG is too large")?];
-    let info = reader
-        .next_frame(&mut buffer)
-        .map_err(|e| format!("not a readable PNG: {e}"))?;
-    let pixels = &buffer[..info.buffer_size()];
-    let size = [info.width as usize, info.height as usize];
-    match info.color_type {
-        png::ColorType::Rgba => Ok(ColorImage::from_rgba_unmultiplied(size, pixels)),
-        png::ColorType::GrayscaleAlpha => {
-            let rgba: Vec<u8> = pixels
-                .chunks_exact(2)
-                .flat_map(|p| [p[0], p[0], p[0], p[1]])
-                .collect();
-            Ok(ColorImage::from_rgba_unmultiplied(size, &rgba))
-        }
-        other => Err(format!("unsupported PNG colour type {other:?}")),
+    let unreadable = |e: minipng::Error| format!("not a readable PNG: {e}");
+    let header = minipng::decode_png_header(bytes).map_err(unreadable)?;
+    let size = [header.width() as usize, header.height() as usize];
+    if size[0].saturating_mul(size[1]) > LARGEST {
+        return Err(format!(
+            "the PNG is {} × {} pixels; a lesson image may have at most 16 million",
+            size[0], size[1]
+        ));
     }
+    let room = header
+        .required_bytes()
+        .max(header.required_bytes_rgba8bpc());
+    let mut buffer = vec![0; room];
+    let mut image = minipng::decode_png(bytes, &mut buffer).map_err(unreadable)?;
+    image.convert_to_rgba8bpc().map_err(unreadable)?;
+    Ok(ColorImage::from_rgba_unmultiplied(size, image.pixels()))
 }
 
 impl ImageCache {
@@ -101,6 +97,59 @@ mod tests {
             decode_png(&gray).unwrap().pixels[0],
             egui::Color32::from_gray(128)
         );
+    }
+
+    #[test]
+    fn grey_with_alpha_sixteen_bits_and_a_palette_decode_too() {
+        let ga = encode(1, 1, png::ColorType::GrayscaleAlpha, &[100, 50]);
+        let pixel = decode_png(&ga).unwrap().pixels[0];
+        assert_eq!(
+            pixel,
+            egui::Color32::from_rgba_unmultiplied(100, 100, 100, 50)
+        );
+        let mut bytes = Vec::new();
+        let mut encoder = png::Encoder::new(&mut bytes, 1, 1);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Sixteen);
+        let mut writer = encoder.write_header().unwrap();
+        writer
+            .write_image_data(&[0xff, 0x00, 0x80, 0x10, 0x00, 0x00])
+            .unwrap();
+        writer.finish().unwrap();
+        let pixel = decode_png(&bytes).unwrap().pixels[0];
+        assert_eq!(pixel, egui::Color32::from_rgb(0xff, 0x80, 0x00));
+        let mut bytes = Vec::new();
+        let mut encoder = png::Encoder::new(&mut bytes, 2, 1);
+        encoder.set_color(png::ColorType::Indexed);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_palette(vec![10, 20, 30, 200, 100, 0]);
+        let mut writer = encoder.write_header().unwrap();
+        writer.write_image_data(&[1, 0]).unwrap();
+        writer.finish().unwrap();
+        let image = decode_png(&bytes).unwrap();
+        assert_eq!(image.pixels[0], egui::Color32::from_rgb(200, 100, 0));
+        assert_eq!(image.pixels[1], egui::Color32::from_rgb(10, 20, 30));
+    }
+
+    #[test]
+    fn a_huge_image_is_refused_before_its_pixels_are_made() {
+        // 4100 × 4100 at one bit a pixel: 2 MB to encode, 67 MB as RGBA.
+        let (w, h) = (4100u32, 4100u32);
+        let mut bytes = Vec::new();
+        let mut encoder = png::Encoder::new(&mut bytes, w, h);
+        encoder.set_color(png::ColorType::Grayscale);
+        encoder.set_depth(png::BitDepth::One);
+        let mut writer = encoder.write_header().unwrap();
+        writer
+            .write_image_data(&vec![0; (w as usize).div_ceil(8) * h as usize])
+            .unwrap();
+        writer.finish().unwrap();
+        let why = decode_png(&bytes).unwrap_err();
+        assert!(why.contains("4100 × 4100"), "{why}");
+        // A header that lies about its size is refused too.
+        let mut lying = encode(1, 1, png::ColorType::Rgb, &[0, 0, 0]);
+        lying[16..20].copy_from_slice(&100_000u32.to_be_bytes());
+        assert!(decode_png(&lying).is_err());
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! A learner's coordinator: `coordinate(outputs, p)` answers the name of
 //! the behaviour that drives, or a command or vector of its own.
 
-use kinolab_script::{Dynamic, Map, Script, ScriptError};
+use kinolab_script::{Dynamic, Script, ScriptError};
 use kinolab_world::Command;
 use kinolab_world::sensors::Percepts;
 
@@ -43,14 +43,14 @@ impl ScriptState {
         let Some(script) = self.script.as_mut().filter(|_| self.failed.is_none()) else {
             return still;
         };
-        let outputs: Map = r
-            .behaviours
-            .iter()
-            .zip(r.responses)
-            .map(|(b, resp)| (b.name.as_str().into(), response_value(resp.as_ref())))
-            .collect();
+        let outputs = kinolab_script::value::map(
+            r.behaviours
+                .iter()
+                .zip(r.responses)
+                .map(|(b, resp)| (b.name.as_str(), response_value(resp.as_ref()))),
+        );
         let answer = script
-            .call(vec![Dynamic::from_map(outputs), percepts(p)], p.time)
+            .call(vec![outputs, percepts(p)], p.time)
             .and_then(|call| {
                 let decision =
                     choose(&call.value, r, p.time, drive).map_err(|e| script.place(e))?;

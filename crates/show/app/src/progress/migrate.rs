@@ -81,15 +81,24 @@ impl From<Version1> for Progress {
 /// Progress from stored text of any format so far, with moved lessons
 /// followed; why not, in words for the learner.
 pub fn read(text: &str) -> Result<Progress, String> {
-    #[derive(Deserialize)]
-    struct Versioned {
-        version: Option<u32>,
-    }
-    let versioned: Versioned =
+    // Read once as JSON, then as the format it names: one JSON reader in
+    // the lab's wasm rather than one per format.
+    let value: serde_json::Value =
         serde_json::from_str(text).map_err(|e| format!("not progress data: {e}"))?;
-    let mut progress = match versioned.version {
-        Some(1) => serde_json::from_str::<Version1>(text).map(Progress::from),
-        Some(VERSION) => serde_json::from_str::<Progress>(text),
+    if !value.is_object() {
+        return Err("not progress data: it is not a JSON object".to_owned());
+    }
+    let version = match value.get("version") {
+        None | Some(serde_json::Value::Null) => None,
+        Some(v) => Some(
+            v.as_u64()
+                .and_then(|v| u32::try_from(v).ok())
+                .ok_or_else(|| format!("not progress data: version `{v}` is not a number"))?,
+        ),
+    };
+    let mut progress = match version {
+        Some(1) => Version1::deserialize(value).map(Progress::from),
+        Some(VERSION) => Progress::deserialize(value),
         Some(newer) if newer > VERSION => {
             return Err(format!(
                 "it was written by a newer Kinolab, format {newer}; this one reads up to {VERSION}"
@@ -98,7 +107,7 @@ pub fn read(text: &str) -> Result<Progress, String> {
         Some(other) => return Err(format!("format {other} is not one Kinolab wrote")),
         None => return Err("it has no format version".to_owned()),
     }
-    .map_err(|e| format!("format {}: {e}", versioned.version.unwrap_or_default()))?;
+    .map_err(|e| format!("format {}: {e}", version.unwrap_or_default()))?;
     follow_moves(&mut progress);
     Ok(progress)
 }
