@@ -34,8 +34,12 @@ pub fn tidy_json(value: serde_json::Value) -> serde_json::Value {
             _ => Value::Number(n),
         },
         Value::Array(items) => Value::Array(items.into_iter().map(tidy_json).collect()),
-        Value::Object(map) => {
-            Value::Object(map.into_iter().map(|(k, v)| (k, tidy_json(v))).collect())
+        Value::Object(mut map) => {
+            // In place: collecting a new map would sort its keys again.
+            for v in map.values_mut() {
+                *v = tidy_json(std::mem::take(v));
+            }
+            Value::Object(map)
         }
         other => other,
     }

@@ -9,6 +9,7 @@
 //! - [`finite`]: the first NaN or infinity in a report, by its path;
 //! - [`feedback`]: [`Feedback`], what a graded exercise says back;
 //! - [`geometry`]: a pose in the plane and an axis-aligned rectangle;
+//! - [`order`]: sorting by numeric keys, one sort for every caller;
 //! - [`trig`]: sine, cosine and atan2, the same bits natively and in wasm;
 //! - [`trajectory`]: one instant of a run in the plane, as reports write it.
 //!
@@ -21,6 +22,7 @@ pub mod error;
 pub mod feedback;
 pub mod finite;
 pub mod geometry;
+pub mod order;
 pub mod random;
 pub mod trajectory;
 pub mod trig;

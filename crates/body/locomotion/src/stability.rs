@@ -46,8 +46,7 @@ fn cross(o: Point, a: Point, b: Point) -> f64 {
 /// collinear corners. Returns one point for coincident input and the two
 /// ends for collinear input.
 pub fn convex_hull(points: &[Point]) -> Vec<Point> {
-    let mut sorted = points.to_vec();
-    sorted.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    let mut sorted = kinolab_common::order::sorted_by(points.to_vec(), |p| *p);
     sorted.dedup();
     if sorted.len() < 3 {
         return sorted;

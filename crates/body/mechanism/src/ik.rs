@@ -373,7 +373,7 @@ impl Model {
                 rest.push(q);
             }
         }
-        scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let scored = kinolab_common::order::sorted_by(scored, |s| [s.0, 0.0]);
         scored.into_iter().map(|(_, q)| q).chain(rest).collect()
     }
 

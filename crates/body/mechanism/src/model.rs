@@ -400,9 +400,8 @@ impl ModelBuilder {
         let order = if self.keep_order {
             self.given_order()
         } else {
-            let mut order: Vec<usize> = (0..self.joints.len()).collect();
-            order.sort_by_key(|&j| chains[self.joints[j].child].len());
-            order
+            let depth = |&j: &usize| [chains[self.joints[j].child].len() as f64, 0.0];
+            kinolab_common::order::sorted_by((0..self.joints.len()).collect(), depth)
         };
         let mut new_index = vec![0; self.joints.len()];
         for (new, &old) in order.iter().enumerate() {

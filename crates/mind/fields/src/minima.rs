@@ -116,7 +116,7 @@ pub fn equilibria(
             }
         }
     }
-    found.sort_by(|a, b| a.0.x.total_cmp(&b.0.x).then(a.0.y.total_cmp(&b.0.y)));
+    let found = kinolab_common::order::sorted_by(found, |(p, _)| [p.x, p.y]);
     Ok(found
         .into_iter()
         .map(|(p, _)| Equilibrium {

@@ -129,8 +129,8 @@ impl Subsumption {
         let mut acting = vec![false; self.nodes.len()];
         // Higher wires first, so a node reads its driving wire after the
         // nodes on that wire have acted.
-        let mut order: Vec<usize> = (0..self.nodes.len()).collect();
-        order.sort_by_key(|&k| std::cmp::Reverse(self.level(&self.nodes[k].on)));
+        let higher_first = |&k: &usize| [-(self.level(&self.nodes[k].on) as f64), 0.0];
+        let order = kinolab_common::order::sorted_by((0..self.nodes.len()).collect(), higher_first);
         for k in order {
             let node = &self.nodes[k];
             let (by, on) = (self.level(&node.by), self.level(&node.on));

@@ -63,17 +63,23 @@ impl From<Version1> for Progress {
             state,
             at: BEFORE_TIMES,
         };
+        // Inserted one by one: collecting into a map sorts, and would put
+        // a sort per record type in the lab's wasm.
+        let mut quizzes = BTreeMap::new();
+        for (k, r) in old.quizzes {
+            quizzes.insert(k, quiz(r));
+        }
+        let mut widgets = BTreeMap::new();
+        for (k, s) in old.widgets {
+            widgets.insert(k, widget(s));
+        }
         Progress {
             version: VERSION,
             visited: old.visited,
-            quizzes: old.quizzes.into_iter().map(|(k, r)| (k, quiz(r))).collect(),
+            quizzes,
             dark: old.dark,
             dark_at: BEFORE_TIMES,
-            widgets: old
-                .widgets
-                .into_iter()
-                .map(|(k, s)| (k, widget(s)))
-                .collect(),
+            widgets,
         }
     }
 }

@@ -48,7 +48,11 @@ pub(super) const COORDINATORS: [CoordinatorKind; 4] = [
 ];
 
 fn gains(pairs: &[(&str, f64)]) -> BTreeMap<String, f64> {
-    pairs.iter().map(|(k, v)| (k.to_string(), *v)).collect()
+    let mut gains = BTreeMap::new();
+    for (k, v) in pairs {
+        gains.insert((*k).to_owned(), *v);
+    }
+    gains
 }
 
 fn node(kind: NodeKind, by: &str, on: &str) -> Node {
