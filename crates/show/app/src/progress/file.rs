@@ -52,7 +52,7 @@ pub fn read(bytes: &[u8]) -> Result<Progress, String> {
     }
     let file: ProgressFile =
         serde_json::from_value(value).map_err(|e| format!("it is damaged ({e})"))?;
-    migrate::read(&file.progress.to_string()).map_err(|why| format!("its progress: {why}"))
+    migrate::read_value(file.progress).map_err(|why| format!("its progress: {why}"))
 }
 
 #[cfg(test)]

@@ -89,8 +89,12 @@ impl From<Version1> for Progress {
 pub fn read(text: &str) -> Result<Progress, String> {
     // Read once as JSON, then as the format it names: one JSON reader in
     // the lab's wasm rather than one per format.
-    let value: serde_json::Value =
-        serde_json::from_str(text).map_err(|e| format!("not progress data: {e}"))?;
+    let value = serde_json::from_str(text).map_err(|e| format!("not progress data: {e}"))?;
+    read_value(value)
+}
+
+/// [`read`] for progress already read as JSON (a progress file holds it).
+pub fn read_value(value: serde_json::Value) -> Result<Progress, String> {
     if !value.is_object() {
         return Err("not progress data: it is not a JSON object".to_owned());
     }

@@ -63,19 +63,20 @@ impl<S: Simulation> Player<S> {
         expected: usize,
         paint: Paint<'_, S::Tick>,
     ) {
-        let (painter, rect, response) = scrub_bar(ui, expected.max(self.len()), self.len());
         let total = expected.max(self.len()).max(1);
+        let (painter, rect, response) = scrub_bar(ui, total, self.len());
         let x = |k: usize| rect.left() + rect.width() * k as f32 / total as f32;
         paint(&painter, rect, &x, self.ticks());
         scrub(self, ui, (&painter, rect, &response), total, name);
     }
 }
 
-/// The scrub bar's ground and its recorded part, `total` ticks long.
+/// The scrub bar's ground and its recorded part, `total` (at least 1)
+/// ticks long.
 fn scrub_bar(ui: &mut egui::Ui, total: usize, recorded: usize) -> (Painter, Rect, egui::Response) {
     let width = ui.available_width();
     let (rect, response) = ui.allocate_exact_size(vec2(width, 22.0), Sense::click_and_drag());
-    let right = rect.left() + width * recorded as f32 / total.max(1) as f32;
+    let right = rect.left() + width * recorded as f32 / total as f32;
     let painter = ui.painter_at(rect.expand(3.0));
     painter.rect_filled(rect, 3.0, ui.visuals().extreme_bg_color);
     let done = egui::Rect::from_min_max(rect.min, pos2(right, rect.max.y));
