@@ -10,6 +10,7 @@ pub const MAX_NESTING: usize = 64;
 /// Rows with a single element are unwrapped, so `\frac{a}{b}` has the two
 /// identifiers as its numerator and denominator, not one-element rows.
 #[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Math {
     /// Atoms side by side, such as `a + b`.
     Row(Vec<Math>),
@@ -62,6 +63,7 @@ pub enum Math {
 ///
 /// Renderers without an italic font may draw `Italic` and `Upright` alike.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Variant {
     /// The default for single Latin and lower-case Greek letters.
     Italic,
@@ -77,6 +79,7 @@ pub enum Variant {
 
 /// What an operator is, which decides the space around it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum OpKind {
     /// `+ − · × ±`: medium space on both sides (none when used as a sign).
     Binary,
@@ -94,6 +97,7 @@ pub enum OpKind {
 
 /// The mark drawn by an accent command.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum AccentKind {
     /// `\dot`: one dot, a time derivative.
     Dot,
@@ -111,6 +115,7 @@ pub enum AccentKind {
 
 /// A delimiter that stretches to the height of what it encloses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Delimiter {
     /// `.`: nothing is drawn.
     None,
@@ -134,6 +139,7 @@ pub enum Delimiter {
 
 /// Which matrix-like environment a [`Math::Matrix`] came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum MatrixKind {
     /// `matrix`: no delimiters.
     Plain,

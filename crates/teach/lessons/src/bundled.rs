@@ -85,21 +85,21 @@ mod tests {
         }
     }
 
-    /// The web page's pack (written by `web/pack-lessons.mjs`) holds the
-    /// very files the native build embeds.
+    /// The web page's pack holds the images the build embeds and, prepared,
+    /// the very course the embedded Markdown makes (and no Markdown).
+    #[cfg(feature = "pack")]
     #[test]
-    fn the_web_pack_holds_the_files_the_build_embeds() {
-        let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-        let dir = std::env::temp_dir().join(format!("kinolab-pack-{}", std::process::id()));
-        let status = std::process::Command::new("node")
-            .arg(here.join("../../../web/pack-lessons.mjs"))
-            .arg(&dir)
-            .status()
-            .expect("node runs (the web build needs it too)");
-        assert!(status.success());
-        let packed = std::fs::read(dir.join("lessons.pack")).unwrap();
-        let _ = std::fs::remove_dir_all(&dir);
-        assert_eq!(Some(&LessonFiles::unpack(&packed).unwrap()), files());
+    fn the_web_pack_holds_the_course_the_embedded_markdown_makes() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../lessons");
+        let web = LessonFiles::unpack(&crate::web_pack(&root).unwrap()).unwrap();
+        let embedded = files().unwrap();
+        assert_eq!(web.course().unwrap(), embedded.course().unwrap());
+        assert_eq!(web.markdown(), []);
+        fn images(files: &LessonFiles) -> Vec<(&str, Option<&[u8]>)> {
+            let paths = files.image_paths();
+            paths.into_iter().map(|p| (p, files.image(p))).collect()
+        }
+        assert_eq!(images(&web), images(embedded));
     }
 
     /// A lesson speaks to a learner who has only the lab: never of the

@@ -1,16 +1,13 @@
 //! Units and lessons put together into a course, with their addresses.
 
-use std::sync::OnceLock;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::document::{Block, Span};
 use crate::error::LessonError;
-use crate::front_matter::{self, FrontMatter, Required};
-use crate::parse::{parse_body, parse_unit};
+use crate::front_matter::FrontMatter;
 
-/// One lesson: its address, file and front matter at once, its body
-/// parsed the first time it is asked for (so a course of fifty lessons
-/// opens without parsing fifty bodies; [`Course::check`] parses them all).
-#[derive(Debug, Clone, PartialEq)]
+/// One lesson: its address, file and front matter, and its body.
+#[derive(Debug, Clone)]
 pub struct Lesson {
     /// Address part, e.g. `open-and-closed-worlds`.
     pub slug: String,
@@ -20,27 +17,53 @@ pub struct Lesson {
     body: Body,
 }
 
-/// A lesson's Markdown after its front matter, and what it parses to.
-#[derive(Debug, Clone, PartialEq)]
-struct Body {
-    text: String,
-    first_line: usize,
-    parsed: OnceLock<Result<Vec<Block>, LessonError>>,
+/// A lesson's body: blocks from a prepared course, or the Markdown after
+/// its front matter, parsed the first time it is asked for (so a course of
+/// fifty lessons opens without parsing fifty bodies; [`Course::check`]
+/// parses them all).
+#[derive(Debug, Clone)]
+enum Body {
+    Ready(Vec<Block>),
+    #[cfg(feature = "markdown")]
+    Markdown {
+        text: String,
+        first_line: usize,
+        parsed: std::sync::OnceLock<Result<Vec<Block>, LessonError>>,
+    },
 }
 
+impl Lesson {
+    /// The lesson's blocks, or why its body does not parse.
+    pub fn blocks(&self) -> Result<&[Block], &LessonError> {
+        match &self.body {
+            Body::Ready(blocks) => Ok(blocks),
+            #[cfg(feature = "markdown")]
+            Body::Markdown {
+                text,
+                first_line,
+                parsed,
+            } => parsed
+                .get_or_init(|| crate::parse::parse_body(&self.file, text, *first_line))
+                .as_deref(),
+        }
+    }
+}
+
+#[cfg(feature = "markdown")]
 impl Lesson {
     /// A lesson read from its file's text: the front matter now, the body
     /// when it is first asked for.
     fn read(slug: String, file: &str, source: &str) -> Result<Self, LessonError> {
-        let (meta, text, first_line) = front_matter::split(file, source, Required::Lesson)?;
+        use crate::front_matter::{Required, split};
+        let (meta, text, first_line) = split(file, source, Required::Lesson)?;
         Ok(Self {
             slug,
             file: file.to_owned(),
             meta,
-            body: Body {
+            body: Body::Markdown {
                 text,
                 first_line,
-                parsed: OnceLock::new(),
+                parsed: std::sync::OnceLock::new(),
             },
         })
     }
@@ -52,18 +75,42 @@ impl Lesson {
         lesson.blocks().map_err(Clone::clone)?;
         Ok(lesson)
     }
+}
 
-    /// The lesson's blocks, or why its body does not parse.
-    pub fn blocks(&self) -> Result<&[Block], &LessonError> {
-        let body = &self.body;
-        body.parsed
-            .get_or_init(|| parse_body(&self.file, &body.text, body.first_line))
-            .as_deref()
+/// Lessons are equal when they say the same: a prepared lesson equals the
+/// Markdown it was prepared from.
+impl PartialEq for Lesson {
+    fn eq(&self, other: &Self) -> bool {
+        self.slug == other.slug
+            && self.file == other.file
+            && self.meta == other.meta
+            && self.blocks() == other.blocks()
+    }
+}
+
+/// A lesson in a prepared course: its body as blocks (a body that does not
+/// parse cannot be prepared).
+impl Serialize for Lesson {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let blocks = self.blocks().map_err(serde::ser::Error::custom)?;
+        (&self.slug, &self.file, &self.meta, blocks).serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for Lesson {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let (slug, file, meta, blocks) = Deserialize::deserialize(deserializer)?;
+        Ok(Self {
+            slug,
+            file,
+            meta,
+            body: Body::Ready(blocks),
+        })
     }
 }
 
 /// A unit: a titled, ordered group of lessons.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Unit {
     /// Address part, e.g. `automation`.
     pub slug: String,
@@ -73,7 +120,7 @@ pub struct Unit {
 }
 
 /// Every unit, in order.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Course {
     pub units: Vec<Unit>,
 }
@@ -104,6 +151,7 @@ pub fn image_path(lesson_file: &str, url: &str) -> String {
 }
 
 impl Course {
+    #[cfg(feature = "markdown")]
     /// Build a course from `(path, text)` pairs, paths relative to the
     /// lessons folder (`01-automation/02-ways-to-move.md`), every lesson's
     /// body parsed and checked. Files are ordered by path; each unit folder
@@ -125,6 +173,7 @@ impl Course {
         Ok(())
     }
 
+    #[cfg(feature = "markdown")]
     /// As [`Course::from_files`], with each lesson's body left to be
     /// parsed when it is first shown: what the lab does as it starts.
     pub fn outline<'a>(
@@ -162,7 +211,7 @@ impl Course {
                 }
             };
             if name == "unit.md" {
-                let (title, summary) = parse_unit(path, text)?;
+                let (title, summary) = crate::parse::parse_unit(path, text)?;
                 unit.title = title;
                 unit.summary = summary;
             } else {

@@ -1,5 +1,7 @@
 //! The document model a lesson is parsed into: blocks of inline spans.
 
+use serde::{Deserialize, Serialize};
+
 use crate::math::Math;
 use crate::quiz::Quiz;
 
@@ -7,7 +9,7 @@ use crate::quiz::Quiz;
 pub type Inline = Vec<Span>;
 
 /// How a piece of text is emphasised, and where it links to.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct TextStyle {
     pub strong: bool,
     pub emphasis: bool,
@@ -17,7 +19,7 @@ pub struct TextStyle {
 }
 
 /// One piece of inline content.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum Span {
     Text {
         text: String,
@@ -35,7 +37,7 @@ pub enum Span {
 }
 
 /// Column alignment in a table.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Align {
     Left,
     Center,
@@ -44,7 +46,7 @@ pub enum Align {
 
 /// A live widget embedded between paragraphs: its registry name and its
 /// `key: value` parameters, in file order.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct WidgetSpec {
     pub name: String,
     pub params: Vec<(String, String)>,
@@ -63,7 +65,7 @@ impl WidgetSpec {
 }
 
 /// One block of a lesson.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum Block {
     Heading {
         level: u8,

@@ -3,10 +3,13 @@
 //! A deliberately small format: `key: value` lines, and `key:` followed by
 //! `  - item` lines for lists. Unknown keys are errors, so typos surface.
 
+use serde::{Deserialize, Serialize};
+
+#[cfg(feature = "markdown")]
 use crate::error::LessonError;
 
 /// What a lesson says about itself.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct FrontMatter {
     pub title: String,
     /// Estimated reading and playing time.
@@ -14,6 +17,7 @@ pub struct FrontMatter {
     pub objectives: Vec<String>,
 }
 
+#[cfg(feature = "markdown")]
 /// Which keys a file must have: lessons need all three, a unit's `unit.md`
 /// only a title.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -22,6 +26,7 @@ pub(crate) enum Required {
     Unit,
 }
 
+#[cfg(feature = "markdown")]
 /// Split `source` into its front-matter and body. Returns the parsed
 /// front-matter, the body, and the 1-based line on which the body starts.
 pub(crate) fn split(
@@ -59,6 +64,7 @@ pub(crate) fn split(
     Ok((fm, body.join("\n"), close_line + 1))
 }
 
+#[cfg(feature = "markdown")]
 /// Reads front-matter lines one at a time, remembering which keys it saw.
 struct Reader<'a> {
     file: &'a str,
@@ -68,6 +74,7 @@ struct Reader<'a> {
     in_objectives: bool,
 }
 
+#[cfg(feature = "markdown")]
 impl<'a> Reader<'a> {
     fn new(file: &'a str) -> Self {
         Self {

@@ -6,13 +6,19 @@
 //! with formulas already parsed ([`math`]), widgets named ([`WidgetSpec`])
 //! and quizzes ready to check ([`Quiz::check`]). It is pure Rust, so it runs
 //! natively, in the browser and in the command-line tool alike.
+//!
+//! The web lab reads no Markdown (the `markdown` feature is off there): its
+//! course comes prepared, parsed and checked when the site is built.
 
 pub mod bundled;
 mod course;
 mod document;
 mod error;
+#[cfg(feature = "pack")]
+mod folder;
 mod front_matter;
 mod pack;
+#[cfg(feature = "markdown")]
 mod parse;
 mod quiz;
 pub mod summary;
@@ -25,5 +31,8 @@ pub use document::{Align, Block, Inline, Span, TextStyle, WidgetSpec, plain_text
 pub use error::LessonError;
 pub use front_matter::FrontMatter;
 pub use pack::LessonFiles;
+#[cfg(feature = "pack")]
+pub use pack::web_pack;
+#[cfg(feature = "markdown")]
 pub use parse::{parse_inline, parse_lesson};
 pub use quiz::{Answer, AnswerError, Quiz, QuizKind, SortItem};

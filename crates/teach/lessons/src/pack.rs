@@ -1,7 +1,10 @@
-//! The lesson folder as one file. The web page fetches it (`lessons.pack`,
-//! written by `web/pack-lessons.mjs`); native builds embed the same format
-//! (`build.rs`). Inside a zlib stream, each file in turn: its path under
-//! `lessons/`, a zero byte, its length as a little-endian `u32`, its bytes.
+//! The lesson folder as one file. Native builds embed its Markdown and
+//! images (`build.rs`). The web page fetches `lessons.pack`, written by the
+//! `pack-lessons` tool: the images, and in place of the Markdown the course
+//! prepared (parsed and checked when the site is built, so the web lab
+//! carries no Markdown parser). Inside a zlib stream, each file in turn:
+//! its path under `lessons/`, a zero byte, its length as a little-endian
+//! `u32`, its bytes.
 
 use crate::course::Course;
 use crate::error::LessonError;
@@ -9,6 +12,9 @@ use crate::error::LessonError;
 /// The most a pack may unpack to: a damaged or hostile file cannot make
 /// the lab reserve more.
 const MAX_UNPACKED: usize = 64 << 20;
+
+/// The entry of a web pack that holds the prepared course.
+const PREPARED: &str = "course.postcard";
 
 /// Every file of the lesson folder (Markdown and images) by its path.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -56,23 +62,77 @@ impl LessonFiles {
             .find_map(|(p, body)| (p == path && p.ends_with(".png")).then_some(body.as_slice()))
     }
 
-    /// The course these files make, with every image a lesson shows checked.
-    pub fn course(&self) -> Result<Course, LessonError> {
-        let course = Course::from_files(self.markdown())?;
-        let images: Vec<&str> = self
-            .files
+    /// Every image's path under `lessons/`.
+    pub(crate) fn image_paths(&self) -> Vec<&str> {
+        self.files
             .iter()
             .map(|(path, _)| path.as_str())
             .filter(|path| path.ends_with(".png"))
-            .collect();
-        course.check_images(&images)?;
+            .collect()
+    }
+
+    /// The course these files make, every lesson's body parsed and every
+    /// image a lesson shows checked.
+    pub fn course(&self) -> Result<Course, LessonError> {
+        let course = self.outline()?;
+        course.check()?;
+        course.check_images(&self.image_paths())?;
         Ok(course)
     }
 
-    /// The course these files make, each body parsed when first shown.
+    /// The course these files make: the prepared one if the pack holds it,
+    /// else read from the Markdown, each body parsed when first shown.
     pub fn outline(&self) -> Result<Course, LessonError> {
+        match self.files.iter().find(|(path, _)| path == PREPARED) {
+            Some((_, bytes)) => Course::from_prepared(bytes),
+            None => self.read_markdown(),
+        }
+    }
+
+    #[cfg(feature = "markdown")]
+    fn read_markdown(&self) -> Result<Course, LessonError> {
         Course::outline(self.markdown())
     }
+
+    #[cfg(not(feature = "markdown"))]
+    fn read_markdown(&self) -> Result<Course, LessonError> {
+        Err(damaged("it holds no prepared course"))
+    }
+}
+
+impl Course {
+    /// The course as a prepared course: every lesson parsed (the first that
+    /// does not parse is the error) and written compactly.
+    pub fn prepare(&self) -> Result<Vec<u8>, LessonError> {
+        self.check()?;
+        postcard::to_allocvec(self).map_err(|e| damaged(format!("cannot prepare the course: {e}")))
+    }
+
+    /// A prepared course read back. It comes from the lab's own build,
+    /// beside its wasm; anything else is refused as damaged.
+    pub fn from_prepared(bytes: &[u8]) -> Result<Self, LessonError> {
+        postcard::from_bytes(bytes).map_err(|_| damaged("its prepared course is damaged"))
+    }
+}
+
+/// The web lab's pack, from the lesson folder at `root`: the images, and
+/// the course prepared from the Markdown (checked first: a lesson that does
+/// not parse, or shows an image that is not there, is the error).
+#[cfg(feature = "pack")]
+pub fn web_pack(root: &std::path::Path) -> Result<Vec<u8>, LessonError> {
+    let mut files = LessonFiles::default();
+    for (relative, path) in crate::folder::lesson_files(root) {
+        let body = std::fs::read(&path)
+            .map_err(|e| LessonError::new(&relative, 0, format!("cannot read it: {e}")))?;
+        files.files.push((relative, body));
+    }
+    let prepared = files.course()?.prepare()?;
+    let images = files.image_paths();
+    let entries = images
+        .iter()
+        .filter_map(|path| Some((*path, files.image(path)?)))
+        .chain([(PREPARED, prepared.as_slice())]);
+    crate::folder::pack(entries).ok_or_else(|| damaged("a file is larger than 4 GiB"))
 }
 
 /// One file at the start of `bytes`: its path, its body and what follows.
@@ -98,6 +158,7 @@ fn entry(bytes: &[u8]) -> Result<(&str, &[u8], &[u8]), LessonError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Block;
 
     /// The format, written the way `build.rs` and `web/pack-lessons.mjs` do.
     fn pack(files: &[(&str, &[u8])]) -> Vec<u8> {
@@ -155,5 +216,91 @@ mod tests {
             let e = LessonFiles::unpack(&bytes).unwrap_err();
             assert!(e.to_string().contains(why), "{e} should say {why:?}");
         }
+    }
+
+    const HEADER: &str = "---\ntitle: A lesson\nminutes: 5\nobjectives:\n  - Read it\n---\n";
+
+    /// A lesson with most of what a body holds: a heading, emphasis, a
+    /// formula, a list, a table, a widget, a quiz and an image.
+    fn rich_lesson() -> String {
+        format!(
+            "{HEADER}## Wheels\n\nA *steered* wheel, $v = r\\omega$.\n\n$$\\dot x = \\frac{{r}}{{2}}$$\n\n\
+             1. one\n2. two\n\n| a | b |\n|:--|--:|\n| 1 | 2 |\n\n![a map](map.png)\n\n\
+             ```widget\nicr-explorer\nwheels: 2\n```\n\n\
+             ```quiz\nkind: single\nquestion: Which?\n- [x] This\n- [ ] That\nexplain: Because.\n```\n"
+        )
+    }
+
+    #[test]
+    fn a_prepared_course_reads_back_as_the_markdown_it_came_from() {
+        let lesson = rich_lesson();
+        let files = [
+            (
+                "01-a/unit.md",
+                "---\ntitle: Unit A\n---\nWhat the unit is about.\n",
+            ),
+            ("01-a/01-first.md", lesson.as_str()),
+        ];
+        let course = Course::from_files(files).unwrap();
+        let prepared = Course::from_prepared(&course.prepare().unwrap()).unwrap();
+        assert_eq!(prepared, course);
+        let blocks = prepared.units[0].lessons[0].blocks().unwrap();
+        assert!(
+            blocks.iter().any(|b| matches!(b, Block::Quiz(_))),
+            "{blocks:?}"
+        );
+        assert!(
+            blocks.iter().any(|b| matches!(b, Block::Math(_))),
+            "{blocks:?}"
+        );
+        assert_eq!(
+            blocks.len(),
+            course.units[0].lessons[0].blocks().unwrap().len()
+        );
+    }
+
+    #[test]
+    fn a_course_with_a_broken_lesson_is_not_prepared_and_damage_is_refused() {
+        let broken = format!("{HEADER}```quiz\nkind: single\n```\n");
+        let files = [
+            ("01-a/unit.md", "---\ntitle: Unit A\n---\n"),
+            ("01-a/01-broken.md", broken.as_str()),
+        ];
+        let e = Course::outline(files).unwrap().prepare().unwrap_err();
+        assert!(e.to_string().starts_with("01-a/01-broken.md:"), "{e}");
+        let good = [
+            ("01-a/unit.md", "---\ntitle: Unit A\n---\n"),
+            ("01-a/01-first.md", HEADER),
+        ];
+        let bytes = Course::from_files(good).unwrap().prepare().unwrap();
+        for cut in [0, 1, bytes.len() / 2, bytes.len() - 1] {
+            let e = Course::from_prepared(&bytes[..cut]).unwrap_err();
+            assert!(e.to_string().contains("damaged"), "{e}");
+        }
+    }
+
+    #[test]
+    fn the_web_pack_holds_the_images_and_the_prepared_course_but_no_markdown() {
+        let root = std::env::temp_dir().join(format!("kinolab-web-pack-{}", std::process::id()));
+        let unit = root.join("01-a");
+        std::fs::create_dir_all(&unit).unwrap();
+        std::fs::write(unit.join("unit.md"), "---\ntitle: Unit A\n---\n").unwrap();
+        std::fs::write(unit.join("01-first.md"), rich_lesson()).unwrap();
+        let png = [137, 80, 78, 71, 13, 10, 26, 10];
+        std::fs::write(unit.join("map.png"), png).unwrap();
+        let web = LessonFiles::unpack(&crate::web_pack(&root).unwrap()).unwrap();
+        assert_eq!(web.markdown(), []);
+        assert_eq!(web.image("01-a/map.png"), Some(&png[..]));
+        let lesson = rich_lesson();
+        let files = [
+            ("01-a/unit.md", "---\ntitle: Unit A\n---\n"),
+            ("01-a/01-first.md", lesson.as_str()),
+        ];
+        assert_eq!(web.course().unwrap(), Course::from_files(files).unwrap());
+        // A lesson that shows an image the folder lacks stops the pack.
+        std::fs::remove_file(unit.join("map.png")).unwrap();
+        let e = crate::web_pack(&root).unwrap_err();
+        let _ = std::fs::remove_dir_all(&root);
+        assert!(e.to_string().contains("no image `map.png`"), "{e}");
     }
 }

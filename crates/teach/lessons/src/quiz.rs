@@ -2,11 +2,14 @@
 
 use std::fmt;
 
+use serde::{Deserialize, Serialize};
+
 use crate::document::Inline;
+#[cfg(feature = "markdown")]
 use crate::error::LessonError;
 
 /// A question that checks understanding, with its explanation.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Quiz {
     pub question: Inline,
     pub kind: QuizKind,
@@ -15,7 +18,7 @@ pub struct Quiz {
 }
 
 /// The kinds of question.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum QuizKind {
     /// Pick the one right option.
     Single {
@@ -42,7 +45,7 @@ pub enum QuizKind {
 
 /// An item of a sorting question: its text, the bin it belongs in, and
 /// why (shown beside it once checked).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SortItem {
     pub text: Inline,
     pub bin: usize,
@@ -141,6 +144,7 @@ impl Quiz {
     }
 }
 
+#[cfg(feature = "markdown")]
 /// The raw lines of a quiz block, before inline Markdown is parsed.
 #[derive(Debug, Default)]
 pub(crate) struct RawQuiz {
@@ -157,6 +161,7 @@ pub(crate) struct RawQuiz {
     pub items: Vec<SortLine>,
 }
 
+#[cfg(feature = "markdown")]
 /// A sorting item as written: `- text => bin :: why`.
 #[derive(Debug)]
 pub(crate) struct SortLine {
@@ -166,6 +171,7 @@ pub(crate) struct SortLine {
     pub line: usize,
 }
 
+#[cfg(feature = "markdown")]
 /// Read a quiz block's lines. `first_line` is the file line of the block's
 /// first content line.
 pub(crate) fn read_raw(file: &str, body: &str, first_line: usize) -> Result<RawQuiz, LessonError> {
