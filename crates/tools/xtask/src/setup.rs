@@ -117,32 +117,40 @@ fn cargo_tool(program: &str, krate: &str, version: &str, locked: bool) -> Result
     run(&mut cmd)
 }
 
-/// wasm-opt (binaryen) and the Chromium driver, from the npm registry.
+/// wasm-opt (binaryen), the Chromium driver and Zopfli, from the npm
+/// registry.
 fn npm_tools() -> Result {
-    let wasm_opt = root().join("web/node_modules/binaryen/package.json");
-    let driver = root().join("web/node_modules/playwright-core/package.json");
-    let has = |path: &Path, version: &str| {
-        std::fs::read_to_string(path)
+    let tools = [
+        ("binaryen", versions::BINARYEN),
+        ("playwright-core", versions::PLAYWRIGHT_CORE),
+        ("@gfx/zopfli", versions::ZOPFLI),
+    ];
+    let has = |name: &str, version: &str| {
+        let manifest = root()
+            .join("web/node_modules")
+            .join(name)
+            .join("package.json");
+        std::fs::read_to_string(manifest)
             .is_ok_and(|t| t.contains(&format!("\"version\": \"{version}\"")))
     };
-    if has(&wasm_opt, versions::BINARYEN) && has(&driver, versions::PLAYWRIGHT_CORE) {
+    if tools.iter().all(|(name, version)| has(name, version)) {
         return Ok(());
     }
+    let wanted: Vec<String> = tools.iter().map(|(n, v)| format!("{n}@{v}")).collect();
     eprintln!(
-        "Installing binaryen {} and playwright-core {} from npm into web/node_modules…",
-        versions::BINARYEN,
-        versions::PLAYWRIGHT_CORE
+        "Installing {} from npm into web/node_modules…",
+        wanted.join(", ")
     );
-    run(Command::new("npm").args([
+    let mut npm = Command::new("npm");
+    npm.args([
         "install",
         "--prefix",
         "web",
         "--no-save",
         "--no-audit",
         "--no-fund",
-        &format!("binaryen@{}", versions::BINARYEN),
-        &format!("playwright-core@{}", versions::PLAYWRIGHT_CORE),
-    ]))
+    ]);
+    run(npm.args(&wanted))
 }
 
 /// Debian's Chromium and ChromeDriver, when missing (needs apt and root).

@@ -12,6 +12,8 @@ pub const WASM_PACK: &str = "0.15.1";
 pub const BINARYEN: &str = "132.0.0";
 /// A Chromium driver for the end-to-end test, using Debian's Chromium.
 pub const PLAYWRIGHT_CORE: &str = "1.65.1";
+/// Zopfli (in wasm, from the npm registry): the release's gzip copies.
+pub const ZOPFLI: &str = "1.0.15";
 
 /// The wasm-bindgen version pinned in Cargo.lock.
 pub fn wasm_bindgen(lock: &str) -> Result<String, String> {
