@@ -15,7 +15,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::behaviour::world_view::draw_world;
 use crate::draw::labels::Labels;
-use crate::draw::{PlaneView, canvas, handle};
+use crate::draw::{PlaneView, canvas, handle, marks};
 use crate::export::{self, Export};
 use crate::link::{self, Moment};
 use crate::player::{Player, Simulation, Speed};
@@ -253,23 +253,20 @@ fn draw_search(
         )
     };
     let ink = ui.visuals().text_color();
-    for j in 0..grid.ny {
-        for i in 0..grid.nx {
-            if !grid.is_free((i, j)) {
-                painter.rect_filled(cell_rect((i, j)), 0.0, ink.gamma_multiply(0.22));
-            }
-        }
-    }
+    let walls = (0..grid.ny)
+        .flat_map(|j| (0..grid.nx).map(move |i| (i, j)))
+        .filter(|&c| !grid.is_free(c))
+        .map(|c| (cell_rect(c), ink.gamma_multiply(0.22)));
+    marks::cells(painter, walls);
     let accent = theme::accent(ui);
     let n = search.expanded.len().max(1) as f32;
-    for (k, &c) in search.expanded.iter().take(shown).enumerate() {
+    let searched = search.expanded.iter().take(shown).enumerate();
+    let searched = searched.map(|(k, &c)| {
         let early = 1.0 - k as f32 / n;
-        painter.rect_filled(
-            cell_rect(c).shrink(0.5),
-            0.0,
-            accent.gamma_multiply(0.12 + 0.33 * early),
-        );
-    }
+        let color = accent.gamma_multiply(0.12 + 0.33 * early);
+        (cell_rect(c).shrink(0.5), color)
+    });
+    marks::cells(painter, searched);
     if shown >= search.expanded.len() && search.path.len() > 1 {
         draw_path(ui, painter, view, grid, &search.path, ends);
     }

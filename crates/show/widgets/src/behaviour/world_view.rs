@@ -150,10 +150,8 @@ pub fn draw_trail(
     points: impl Iterator<Item = [f64; 2]>,
     color: Color32,
 ) {
-    let pts: Vec<Pos2> = points.map(|p| view.to_screen(p)).collect();
-    if pts.len() > 1 {
-        painter.add(Shape::line(pts, Stroke::new(1.5, color)));
-    }
+    let pts = points.map(|p| view.to_screen(p));
+    crate::draw::marks::path(painter, pts, Stroke::new(1.5, color));
 }
 
 #[cfg(test)]

@@ -470,20 +470,40 @@ fn cycle_view(
         ],
         Stroke::new(1.0, weak),
     );
+    // One polyline per run of stable (or unstable) samples, not a shape per
+    // sample: the curve is redrawn on every frame while the cycle plays.
     let good = theme::good_color(ui);
     let bad = theme::error_color(ui);
-    for pair in curve.windows(2) {
-        if let (Some(a), Some(b)) = (pair[0].margin, pair[1].margin) {
-            let color = if a.min(b) > 0.0 { good } else { bad };
-            painter.line_segment(
-                [
-                    Pos2::new(x_of(pair[0].tau), y_of(a)),
-                    Pos2::new(x_of(pair[1].tau), y_of(b)),
-                ],
+    let mut run: Vec<Pos2> = Vec::new();
+    let mut run_good = true;
+    let finish = |run: &mut Vec<Pos2>, good_run: bool| {
+        if run.len() > 1 {
+            let color = if good_run { good } else { bad };
+            painter.add(egui::Shape::line(
+                std::mem::take(run),
                 Stroke::new(2.0, color),
-            );
+            ));
         }
+        run.clear();
+    };
+    for pair in curve.windows(2) {
+        let (Some(a), Some(b)) = (pair[0].margin, pair[1].margin) else {
+            finish(&mut run, run_good);
+            continue;
+        };
+        let (from, to) = (
+            Pos2::new(x_of(pair[0].tau), y_of(a)),
+            Pos2::new(x_of(pair[1].tau), y_of(b)),
+        );
+        let stable = a.min(b) > 0.0;
+        if stable != run_good || run.is_empty() {
+            finish(&mut run, run_good);
+            run_good = stable;
+            run.push(from);
+        }
+        run.push(to);
     }
+    finish(&mut run, run_good);
     let tick = |at: Pos2, align: Align2, text: &str| {
         painter.text(
             at,

@@ -10,7 +10,7 @@ use super::ArchitectureArena;
 use super::race::Spring;
 use super::settings::{Scripted, WorldId};
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
-use crate::draw::{PlaneView, canvas};
+use crate::draw::{PlaneView, canvas, marks};
 use crate::theme;
 use crate::widget::range;
 
@@ -177,14 +177,15 @@ fn draw_belief(painter: &egui::Painter, view: &PlaneView, belief: &Belief<'_>, c
     }
     if let Some(p) = belief.planning {
         let half = p.grid.cell / 2.0;
-        for &c in p.searching.expanded() {
+        let searched = p.searching.expanded().iter().map(|&c| {
             let q = p.grid.centre(c);
             let r = Rect::from_two_pos(
                 view.to_screen([q.x - half, q.y + half]),
                 view.to_screen([q.x + half, q.y - half]),
             );
-            painter.rect_filled(r, 0.0, color.gamma_multiply(0.12));
-        }
+            (r, color.gamma_multiply(0.12))
+        });
+        marks::cells(painter, searched);
     }
     if !belief.plan.is_empty() {
         let pts: Vec<_> = belief.plan.iter().map(|p| view.to_screen(*p)).collect();
@@ -200,13 +201,14 @@ fn draw_map(painter: &egui::Painter, view: &PlaneView, map: &Cartographer, color
     let half = map.cell / 2.0;
     // The fence is drawn already; its row of cells would only fringe it.
     let inner = |(i, j): (usize, usize)| i > 0 && j > 0 && i + 1 < map.nx && j + 1 < map.ny;
-    for c in map.occupied_cells().filter(|c| inner(*c)) {
+    let occupied = map.occupied_cells().filter(|c| inner(*c)).map(|c| {
         let q = map.centre(c);
         let (_, felt) = map.evidence(c);
         let r = Rect::from_two_pos(
             view.to_screen([q.x - half, q.y + half]),
             view.to_screen([q.x + half, q.y - half]),
         );
-        painter.rect_filled(r, 0.0, color.gamma_multiply(if felt { 0.75 } else { 0.35 }));
-    }
+        (r, color.gamma_multiply(if felt { 0.75 } else { 0.35 }))
+    });
+    marks::cells(painter, occupied);
 }

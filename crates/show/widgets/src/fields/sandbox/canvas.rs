@@ -2,7 +2,7 @@
 //! primitives with their handles, equilibria, the robots' trails and the
 //! basin map.
 
-use egui::{Color32, Mesh, Painter, Pos2, Rect, Sense, Stroke, vec2};
+use egui::{Color32, Painter, Pos2, Rect, Sense, Stroke, vec2};
 use kinolab_common::display::fixed;
 use kinolab_fields::basin::Basin;
 use kinolab_fields::descend::Outcome;
@@ -12,7 +12,7 @@ use kinolab_fields::{Field, Vec2};
 use super::Sandbox;
 use super::piece::Kind;
 use crate::draw::labels::Labels;
-use crate::draw::marks::{arrow, cross, dashed_circle, star};
+use crate::draw::marks::{self, arrow, cross, dashed_circle, star};
 use crate::draw::{PlaneView, canvas, corner_text, handle};
 use crate::theme;
 
@@ -200,8 +200,8 @@ impl Sandbox {
     /// steps along), the unicycle's trail and the start.
     fn draw_runs(&self, painter: &Painter, view: &PlaneView, ink: &Ink, at: Option<usize>) {
         let path = |points: &[[f64; 2]], color: Color32, width: f32| {
-            let pts: Vec<Pos2> = points.iter().map(|p| view.to_screen(*p)).collect();
-            painter.add(egui::Shape::line(pts, Stroke::new(width, color)));
+            let pts = points.iter().map(|p| view.to_screen(*p));
+            marks::path(painter, pts, Stroke::new(width, color));
         };
         for (run, shown) in self.analysis.remedies.iter().zip(self.design.drawn) {
             if let (true, Some(d)) = (shown, &run.descent) {
@@ -282,11 +282,11 @@ impl Sandbox {
             view.length(s.area.width() / s.nx as f64) / 2.0,
             view.length(s.area.height() / s.ny as f64) / 2.0,
         );
-        for (k, b) in map.cells.iter().enumerate() {
-            let color = basin_color(*b, ink);
+        let cells = map.cells.iter().enumerate().map(|(k, b)| {
             let at = view.to_screen(w(s.start(k)));
-            painter.rect_filled(Rect::from_center_size(at, half * 2.0), 0.0, color);
-        }
+            (Rect::from_center_size(at, half * 2.0), basin_color(*b, ink))
+        });
+        marks::cells(painter, cells);
     }
 
     /// Handles for every piece, the start and (when it stands alone) the
@@ -396,8 +396,9 @@ fn strength(field: &Field, m: f64) -> f32 {
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Wanted {
     version: u64,
-    /// A piece is being dragged: a coarser shading and shorter streamlines,
-    /// so the drag keeps up; full detail on release.
+    /// A piece is being dragged: coarser shading and arrows and shorter
+    /// streamlines, so the drag keeps up on a slow phone (the arrows were
+    /// most of a dragged frame's drawing); full detail on release.
     coarse: bool,
     shading: bool,
     streamlines: bool,
@@ -436,7 +437,12 @@ impl Backdrop {
             true => field.arrows(area, self.shade_grid.0, self.shade_grid.1),
             false => Vec::new(),
         };
-        self.arrow_grid = (ARROW_COLUMNS, rows(area, ARROW_COLUMNS, 3.0, 30.0));
+        let columns = if wanted.coarse {
+            ARROW_COLUMNS / 2
+        } else {
+            ARROW_COLUMNS
+        };
+        self.arrow_grid = (columns, rows(area, columns, 3.0, 30.0));
         self.arrows = field.arrows(area, self.arrow_grid.0, self.arrow_grid.1);
         let steps = if wanted.coarse { 150 } else { 400 };
         self.lines = match wanted.streamlines {
@@ -457,14 +463,13 @@ impl Backdrop {
 /// The field's strength as shading: stronger is darker accent.
 fn shade(painter: &Painter, view: &PlaneView, b: &Backdrop, field: &Field, color: Color32) {
     let (hx, hy) = (b.cell(b.shade_grid)[0] / 2.0, b.cell(b.shade_grid)[1] / 2.0);
-    let mut mesh = Mesh::default();
-    for &(p, f) in &b.shade {
+    let shading = b.shade.iter().map(|&(p, f)| {
         let t = strength(field, f.norm());
         let a = view.to_screen([p.x - hx, p.y + hy]);
         let c = view.to_screen([p.x + hx, p.y - hy]);
-        mesh.add_colored_rect(Rect::from_two_pos(a, c), color.gamma_multiply(0.35 * t));
-    }
-    painter.add(mesh);
+        (Rect::from_two_pos(a, c), color.gamma_multiply(0.35 * t))
+    });
+    marks::cells(painter, shading);
 }
 
 /// Arrows on a grid: direction exact, length growing with strength up to
@@ -486,8 +491,8 @@ fn arrows(painter: &Painter, view: &PlaneView, b: &Backdrop, field: &Field, colo
 /// The streamlines, as screen polylines.
 fn lines(painter: &Painter, view: &PlaneView, b: &Backdrop, color: Color32) {
     for line in &b.lines {
-        let pts = line.iter().map(|&p| view.to_screen(w(p))).collect();
-        painter.add(egui::Shape::line(pts, Stroke::new(1.0, color)));
+        let pts = line.iter().map(|&p| view.to_screen(w(p)));
+        marks::path(painter, pts, Stroke::new(1.0, color));
     }
 }
 
@@ -537,6 +542,7 @@ mod tests {
         let (nx, ny) = b.shade_grid;
         assert_eq!((nx, b.shade.len()), (SHADE_COLUMNS, nx * ny));
         assert_eq!(b.lines.len(), 15);
+        let arrows_still = b.arrows.len();
         // The same field again (a hover, a scroll): nothing is resampled.
         let first = b.shade.as_ptr();
         b.update(&field, &area, still);
@@ -552,6 +558,8 @@ mod tests {
             },
         );
         assert_eq!(b.shade_grid.0, SHADE_COLUMNS / 2);
+        assert_eq!(b.arrow_grid.0, ARROW_COLUMNS / 2);
+        assert!(b.arrows.len() * 3 < arrows_still, "{}", b.arrows.len());
         assert!(
             b.shade.len() * 3 < nx * ny,
             "{} of {}",
