@@ -1,8 +1,8 @@
 //! The lab's own lessons, the files under `lessons/`. Native builds embed
 //! them (the `embedded` feature: the command line, the JS package and the
 //! native window need no server); the web lab leaves them out of its wasm
-//! and its page hands them over, fetched beside the wasm, before the lab
-//! starts ([`provide`]).
+//! and its page hands them over, fetched beside the wasm with the course
+//! already prepared (see `pack.rs`), before the lab starts ([`provide`]).
 
 use std::sync::OnceLock;
 
@@ -46,8 +46,9 @@ pub fn course() -> Result<Course, LessonError> {
     loaded()?.course()
 }
 
-/// The course as the lab opens it: each lesson's body parsed when it is
-/// first shown, so the first page does not wait for every lesson.
+/// The course as the lab opens it: prepared (the web lab), or read from
+/// the Markdown with each lesson's body parsed when it is first shown, so
+/// the first page does not wait for every lesson.
 pub fn outline() -> Result<Course, LessonError> {
     loaded()?.outline()
 }
