@@ -10,6 +10,7 @@ use kinolab_formula::layout::{InlineMath, MathStyle, display_math};
 use kinolab_widgets::theme;
 use kinolab_widgets::widget::{LabWidget, error_box, sideways};
 
+use crate::first_screen::FirstScreen;
 use crate::images::ImageCache;
 use crate::progress::Progress;
 use crate::quiz_view::{QuizState, quiz_ui};
@@ -35,6 +36,8 @@ pub struct LessonState<'a> {
     pub images: &'a mut ImageCache,
     /// Set when the learner follows a link to another page.
     pub navigate: &'a mut Option<Page>,
+    /// Where the lab's first frame stops laying out the lesson.
+    pub first_screen: &'a mut FirstScreen,
 }
 
 impl std::fmt::Debug for LessonState<'_> {
@@ -51,6 +54,9 @@ pub fn blocks_ui(ui: &mut egui::Ui, blocks: &[Block], state: &mut LessonState<'_
     let mut quiz_no = 0;
     let mut widget_no = 0;
     for block in blocks {
+        if state.first_screen.stop(ui) {
+            break;
+        }
         block_ui(ui, block, state, &mut quiz_no, &mut widget_no);
     }
 }

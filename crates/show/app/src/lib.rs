@@ -11,6 +11,7 @@
 //! Everything but [`window`] uses egui alone, so the shell's tests build
 //! without the window stack (`cargo test -p kinolab-app --no-default-features`).
 
+pub mod first_screen;
 pub mod gallery;
 pub mod images;
 pub mod lesson_view;

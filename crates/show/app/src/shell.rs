@@ -8,6 +8,7 @@ use kinolab_lessons::{Course, Lesson, LessonError, Unit};
 use kinolab_widgets::theme;
 use kinolab_widgets::widget::error_box;
 
+use crate::first_screen::FirstScreen;
 use crate::images::ImageCache;
 use crate::lesson_view::{LessonState, WidgetSlot, blocks_ui, inline_ui};
 use crate::progress::{Millis, Progress};
@@ -54,10 +55,12 @@ pub struct KinolabApp {
     /// The URL hash the app wants the browser to show, once.
     pending_hash: Option<String>,
     scroll_to_top: bool,
-    /// Fonts and text styles are installed on the first frame.
+    /// Fonts and text styles are installed (see [`KinolabApp::install_style`]).
     style_ready: bool,
     /// Frames that drew the lab's content.
     frames_drawn: u64,
+    /// How much of the page this frame lays out (the first frame: a screenful).
+    first_screen: FirstScreen,
     /// How far right the page's content reached on the last frame, and the
     /// screen's right edge (see [`KinolabApp::extent`]).
     extent: (f32, f32),
@@ -102,6 +105,7 @@ impl KinolabApp {
             scroll_to_top: false,
             style_ready: false,
             frames_drawn: 0,
+            first_screen: FirstScreen::default(),
             extent: (0.0, 0.0),
             points: String::new(),
             touch_screen: false,
@@ -280,19 +284,28 @@ impl KinolabApp {
         ctx.set_theme(preference);
     }
 
+    /// Install the lab's fonts, text styles and theme. Fonts take effect at
+    /// the start of the next frame, so the host calls this before the first
+    /// one, and that frame already draws the page.
+    pub fn install_style(&mut self, ctx: &egui::Context) {
+        theme::install(ctx);
+        self.apply_theme(ctx);
+        self.style_ready = true;
+    }
+
     /// Draw the whole lab into `ui`.
     pub fn show(&mut self, ui: &mut egui::Ui) {
         if !self.style_ready {
-            // Fonts change only at the start of the next frame: wait for them.
-            theme::install(ui.ctx());
-            self.apply_theme(ui.ctx());
-            self.style_ready = true;
+            // A host that did not install the style: install it now and
+            // draw from the next frame, when the fonts are in.
+            self.install_style(ui.ctx());
             ui.ctx().request_repaint();
             return;
         }
         if std::mem::take(&mut self.theme_changed) {
             self.apply_theme(ui.ctx());
         }
+        self.first_screen = FirstScreen::new(self.frames_drawn == 0);
         let screen = ui.ctx().content_rect();
         let wide = screen.width() >= NARROW;
         let sidebar_open = *self.sidebar_open.get_or_insert(wide);
@@ -360,6 +373,12 @@ impl KinolabApp {
     /// How many frames have drawn content (0 while fonts are being set up).
     pub fn frames_drawn(&self) -> u64 {
         self.frames_drawn
+    }
+
+    /// Whether the last frame laid out the whole page (the first frame
+    /// lays out only a screenful, see [`FirstScreen`]).
+    pub fn page_complete(&self) -> bool {
+        self.frames_drawn > 0 && !self.first_screen.cut()
     }
 
     /// The top bar; returns where it ends. On a phone it keeps the lesson
@@ -448,6 +467,9 @@ impl KinolabApp {
                 return;
             };
             for (n, unit) in course.units.iter().enumerate() {
+                if self.first_screen.stop(ui) {
+                    break;
+                }
                 ui.add_space(8.0);
                 ui.label(RichText::new(format!("Unit {}: {}", n + 1, unit.title)).strong());
                 for lesson in &unit.lessons {
@@ -530,6 +552,9 @@ impl KinolabApp {
             Err(e) => error_box(ui, "The lessons could not be loaded", &e.to_string()),
             Ok(course) => {
                 for (n, unit) in course.units.iter().enumerate() {
+                    if self.first_screen.stop(ui) {
+                        break;
+                    }
                     unit_card(ui, n, unit, &self.progress, &mut target);
                 }
             }
@@ -570,6 +595,7 @@ impl KinolabApp {
             now: self.now,
             images: &mut self.images,
             navigate: &mut navigate,
+            first_screen: &mut self.first_screen,
         };
         match lesson.blocks() {
             Ok(blocks) => blocks_ui(ui, blocks, &mut state),

@@ -126,8 +126,9 @@ pub fn after_frame(app: &mut KinolabApp) {
     let extent = format!("{right:.0} {screen:.0}");
     let notice = app.notice().unwrap_or_default().to_owned();
     let opened = app.progress().visited.len().to_string();
+    let complete = app.page_complete();
     let signal = format!(
-        "{page}|{}|{extent}|{}|{notice}|{opened}",
+        "{page}|{}|{extent}|{}|{notice}|{opened}|{complete}",
         app.title(),
         app.points()
     );
@@ -144,7 +145,7 @@ pub fn after_frame(app: &mut KinolabApp) {
                 // (what another tab's progress changes).
                 let _ = root.set_attribute("data-kinolab-notice", &notice);
                 let _ = root.set_attribute("data-kinolab-opened", &opened);
-                if root.get_attribute("data-kinolab-ready").is_none() {
+                if root.get_attribute("data-kinolab-first-frame-ms").is_none() {
                     // Milliseconds from navigation to the first drawn frame.
                     let now = window()
                         .and_then(|w| w.performance())
@@ -154,7 +155,11 @@ pub fn after_frame(app: &mut KinolabApp) {
                         loading.remove();
                     }
                 }
-                let _ = root.set_attribute("data-kinolab-ready", "1");
+                // Ready once a frame laid out the whole page (the first
+                // lays out a screenful).
+                if complete {
+                    let _ = root.set_attribute("data-kinolab-ready", "1");
+                }
             }
         }
         LAST_SIGNAL.set(signal);

@@ -117,6 +117,7 @@ pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
         kinolab_widgets::probe::enable(&cc.egui_ctx);
     }
     let mut app = KinolabApp::new(stored.as_deref(), hash);
+    app.install_style(&cc.egui_ctx);
     #[cfg(target_arch = "wasm32")]
     {
         if let (Some(text), Some(_)) = (&stored, app.notice()) {

@@ -991,3 +991,32 @@ fn every_widget_says_what_it_shows() {
         }
     }
 }
+
+/// A learner who opens the lab sees its first screen sooner: the first
+/// frame that draws lays out what fits on a 1280×720 screen, and the next,
+/// asked for at once, the whole page, down to the last unit in the lesson
+/// list and on the home page.
+#[test]
+fn the_first_frame_lays_out_a_screenful_and_the_next_the_rest() {
+    type Seen = (KinolabApp, Vec<bool>);
+    let screen = Harness::builder().with_size(egui::vec2(1280.0, 720.0));
+    let mut h = screen.build_ui_state(
+        |ui, (app, complete): &mut Seen| {
+            app.show(ui);
+            if app.frames_drawn() > 0 {
+                complete.push(app.page_complete());
+            }
+        },
+        (KinolabApp::new(None, ""), Vec::new()),
+    );
+    h.run();
+    let complete = &h.state().1;
+    assert_eq!(complete.first(), Some(&false), "{complete:?}");
+    assert!(
+        complete.len() > 1 && complete[1..].iter().all(|c| *c),
+        "{complete:?}"
+    );
+    let units = &h.state().0.course().unwrap().units;
+    let last = format!("Unit {}: {}", units.len(), units[units.len() - 1].title);
+    assert_eq!(h.get_all_by_label(&last).count(), 2);
+}

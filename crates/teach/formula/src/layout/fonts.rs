@@ -19,7 +19,21 @@ static PROVIDED: OnceLock<Faces> = OnceLock::new();
 /// Hand over the two font files the page fetched (`kinolab-sans.ttf`,
 /// `kinolab-mono.ttf`); the first call wins.
 pub fn provide(sans: Vec<u8>, mono: Vec<u8>) {
-    let _ = PROVIDED.set([sans, mono].map(|bytes| Arc::new(FontData::from_owned(bytes))));
+    let _ = PROVIDED.set([sans, mono].map(|bytes| face(FontData::from_owned(bytes))));
+}
+
+/// A face drawn from its outlines as they are, without hinting. The cut
+/// fonts carry no hinting instructions, so egui would hint them with
+/// skrifa's automatic hinter, which studies the whole font again each time
+/// the text size changes: most of the cost of a first page's new glyphs.
+/// Text is placed by the shaper's advances either way, so layout (and every
+/// formula's metrics) is the same; only the glyphs' pixels differ.
+fn face(data: FontData) -> Arc<FontData> {
+    let tweak = egui::FontTweak {
+        hinting: Some(false),
+        ..Default::default()
+    };
+    Arc::new(data.tweak(tweak))
 }
 
 #[cfg(feature = "embedded")]
@@ -27,7 +41,7 @@ fn embedded() -> Option<&'static Faces> {
     const SANS: &[u8] = include_bytes!("../../fonts/kinolab-sans.ttf");
     const MONO: &[u8] = include_bytes!("../../fonts/kinolab-mono.ttf");
     static FACES: OnceLock<Faces> = OnceLock::new();
-    Some(FACES.get_or_init(|| [SANS, MONO].map(|bytes| Arc::new(FontData::from_static(bytes)))))
+    Some(FACES.get_or_init(|| [SANS, MONO].map(|bytes| face(FontData::from_static(bytes)))))
 }
 
 #[cfg(not(feature = "embedded"))]
