@@ -5,17 +5,26 @@
 //! splices, closures over items) that no robot's code here calls and that
 //! cost the lab's page about 0.1 MB of wasm. The ones kept are the ones a
 //! learner reaches for: size, add and take, look up, and `in`.
+//!
+//! Rhai counts each of these calls as one operation, but looking through
+//! or copying a list takes time in proportion to its length: each such
+//! call charges its length to the call's budget, so ten searches of a
+//! long list a call cost what they take.
+
+use std::rc::Rc;
 
 use rhai::{Array, Dynamic, Engine, EvalAltResult, ImmutableString, Map, Position};
 
-use crate::sandbox::LIMITS;
+use crate::sandbox::{Budget, LIMITS};
 
 type Done<T> = Result<T, Box<EvalAltResult>>;
 
-/// Register the list and map functions on `e`, and `for x in list`.
-pub(crate) fn register(e: &mut Engine) {
+/// Register the list and map functions on `e`, and `for x in list`,
+/// charging their work to `budget`.
+pub(crate) fn register(e: &mut Engine, budget: &Rc<Budget>) {
     lists(e);
-    maps(e);
+    searches(e, budget);
+    maps(e, budget);
     let mut iterable = rhai::Module::new();
     iterable.set_iterable::<Array>();
     e.register_global_module(iterable.into());
@@ -31,19 +40,45 @@ fn lists(e: &mut Engine) {
         .register_fn("remove", remove)
         .register_fn("clear", |a: &mut Array| a.clear())
         .register_fn("pad", pad)
-        .register_fn("contains", |a: &mut Array, x: Dynamic| {
-            a.iter().any(|y| same(y, &x))
-        })
-        .register_fn("index_of", |a: &mut Array, x: Dynamic| {
-            a.iter().position(|y| same(y, &x)).map_or(-1, |i| i as i64)
-        })
-        .register_fn("+", |a: Array, b: Array| [a, b].concat())
-        .register_fn("append", |a: &mut Array, b: Array| a.extend(b))
-        .register_fn("==", |a: &mut Array, b: Array| equal(a, &b))
-        .register_fn("!=", |a: &mut Array, b: Array| !equal(a, &b));
+        .register_fn("len", |s: &mut ImmutableString| s.chars().count() as i64)
+        .register_fn("is_empty", |s: &mut ImmutableString| s.is_empty());
 }
 
-fn maps(e: &mut Engine) {
+/// The functions whose work grows with a list's length.
+fn searches(e: &mut Engine, budget: &Rc<Budget>) {
+    let b = budget.clone();
+    e.register_fn("contains", move |a: &mut Array, x: Dynamic| {
+        b.charge(a.len());
+        a.iter().any(|y| same(y, &x))
+    });
+    let b = budget.clone();
+    e.register_fn("index_of", move |a: &mut Array, x: Dynamic| {
+        b.charge(a.len());
+        a.iter().position(|y| same(y, &x)).map_or(-1, |i| i as i64)
+    });
+    let b = budget.clone();
+    e.register_fn("+", move |a: Array, b2: Array| {
+        b.charge(a.len() + b2.len());
+        [a, b2].concat()
+    });
+    let b = budget.clone();
+    e.register_fn("append", move |a: &mut Array, more: Array| {
+        b.charge(more.len());
+        a.extend(more)
+    });
+    let b = budget.clone();
+    e.register_fn("==", move |a: &mut Array, other: Array| {
+        b.charge(a.len());
+        equal(a, &other)
+    });
+    let b = budget.clone();
+    e.register_fn("!=", move |a: &mut Array, other: Array| {
+        b.charge(a.len());
+        !equal(a, &other)
+    });
+}
+
+fn maps(e: &mut Engine, budget: &Rc<Budget>) {
     e.register_fn("len", |m: &mut Map| m.len() as i64)
         .register_fn("is_empty", |m: &mut Map| m.is_empty())
         .register_fn("contains", |m: &mut Map, k: ImmutableString| {
@@ -52,15 +87,19 @@ fn maps(e: &mut Engine) {
         .register_fn("remove", |m: &mut Map, k: ImmutableString| {
             m.remove(k.as_str()).unwrap_or(Dynamic::UNIT)
         })
-        .register_fn("clear", |m: &mut Map| m.clear())
-        .register_fn("keys", |m: &mut Map| -> Array {
-            m.keys()
-                .map(|k| ImmutableString::from(k.as_str()).into())
-                .collect()
-        })
-        .register_fn("values", |m: &mut Map| -> Array {
-            m.values().cloned().collect()
-        });
+        .register_fn("clear", |m: &mut Map| m.clear());
+    let b = budget.clone();
+    e.register_fn("keys", move |m: &mut Map| -> Array {
+        b.charge(m.len());
+        m.keys()
+            .map(|k| ImmutableString::from(k.as_str()).into())
+            .collect()
+    });
+    let b = budget.clone();
+    e.register_fn("values", move |m: &mut Map| -> Array {
+        b.charge(m.len());
+        m.values().cloned().collect()
+    });
 }
 
 /// The first item, taken out (`()` when the list is empty).

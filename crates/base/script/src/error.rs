@@ -6,11 +6,11 @@ use std::fmt;
 use kinolab_common::display::fixed;
 use rhai::{EvalAltResult, ParseError, Position};
 
-use crate::sandbox::LIMITS;
+use crate::sandbox::{LIMITS, stop};
 use crate::script::Signature;
 
 /// The kind of problem, for tests and for the stepper's colour.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ErrorKind {
     /// The code does not parse.
@@ -36,7 +36,7 @@ pub enum ErrorKind {
 
 /// A problem with a learner's script (as reports write it: `kind`,
 /// `message`, `line`, `column`, `t`).
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ScriptError {
     pub kind: ErrorKind,
     /// What happened, in a sentence (with the time when it ran).
@@ -124,9 +124,9 @@ impl ScriptError {
     }
 
     /// The code does not parse.
-    pub(crate) fn syntax(e: &ParseError) -> Self {
-        let message = format!("{}: the code cannot run until this is fixed", e.err_type());
-        Self::new(ErrorKind::Syntax, message, e.position(), None)
+    pub(crate) fn syntax(e: &ParseError, source: &str) -> Self {
+        let (message, at) = crate::words::syntax(e, source);
+        Self::new(ErrorKind::Syntax, message, at, None)
     }
 
     /// The function is missing, or found with `found` parameter counts.
@@ -168,8 +168,8 @@ impl ScriptError {
         Self::new(ErrorKind::NotFinite, message, Position::NONE, at.time())
     }
 
-    /// An error while the function ran.
-    pub(crate) fn run(e: &EvalAltResult, at: When, signature: Signature) -> Self {
+    /// An error while the function ran (`source` is its code).
+    pub(crate) fn run(e: &EvalAltResult, at: When, signature: Signature, source: &str) -> Self {
         let inner = e.unwrap_inner();
         // An operation count stops wherever it is; then the function's call.
         let position = match inner.position() {
@@ -178,20 +178,8 @@ impl ScriptError {
         };
         let when = at.words();
         let (kind, message) = match inner {
-            EvalAltResult::ErrorTooManyOperations(_) => (
-                ErrorKind::Endless,
-                format!(
-                    "your function did more than {} steps{when}: is there a loop that never ends?",
-                    group(LIMITS.operations)
-                ),
-            ),
-            EvalAltResult::ErrorTerminated(..) => (
-                ErrorKind::TooSlow,
-                format!(
-                    "your function has done more than {} steps in all{when}: does it do far more work each time than the job needs?",
-                    group(LIMITS.run_operations)
-                ),
-            ),
+            EvalAltResult::ErrorTerminated(token, _) => stopped(&token.to_string(), &when),
+            EvalAltResult::ErrorTooManyOperations(_) => stopped(stop::CALL_STEPS, &when),
             EvalAltResult::ErrorStackOverflow(_) => (
                 ErrorKind::TooDeep,
                 format!(
@@ -199,22 +187,87 @@ impl ScriptError {
                     LIMITS.call_depth
                 ),
             ),
-            EvalAltResult::ErrorDataTooLarge(what, _) => (
-                ErrorKind::TooLarge,
-                format!(
-                    "your function made {} too large{when} (the bound is {} for strings and arrays, {} for maps): does something grow every time round a loop?",
-                    what.to_lowercase(),
-                    group(LIMITS.string as u64),
-                    group(LIMITS.map as u64)
-                ),
-            ),
+            EvalAltResult::ErrorDataTooLarge(what, _) => {
+                (ErrorKind::TooLarge, too_large(what, &when))
+            }
             other => (
                 ErrorKind::Runtime,
-                format!("in `{}`{when}: {}", signature.name, plain(other)),
+                format!(
+                    "in `{}`{when}: {}",
+                    signature.name,
+                    crate::words::runtime(other, source).unwrap_or_else(|| plain(other))
+                ),
             ),
         };
         Self::new(kind, message, position, at.time())
     }
+
+    /// The function answered, or kept in `this`, lists inside lists
+    /// deeper than the sandbox allows.
+    pub(crate) fn nested(signature: Signature, what: &str, at: When) -> Self {
+        let message = format!(
+            "`{}` {what} lists or maps inside each other more than {} deep{}: does something wrap itself every call?",
+            signature.name,
+            LIMITS.nesting,
+            at.words()
+        );
+        Self::new(ErrorKind::TooLarge, message, Position::NONE, at.time())
+    }
+}
+
+/// Why the sandbox stopped a call (see [`stop`]), in words.
+fn stopped(token: &str, when: &str) -> (ErrorKind, String) {
+    match token {
+        stop::RUN_STEPS => (
+            ErrorKind::TooSlow,
+            format!(
+                "your function has done more than {} steps in all{when}: does it do far more work each time than the job needs?",
+                group(LIMITS.run_operations)
+            ),
+        ),
+        stop::CALL_TIME => (
+            ErrorKind::Endless,
+            format!(
+                "your function ran for more than {} s in one call{when}: is there a loop that never ends, or a list that grows each time round?",
+                LIMITS.call_seconds
+            ),
+        ),
+        stop::RUN_TIME => (
+            ErrorKind::TooSlow,
+            format!(
+                "your function has run for more than {} s in all{when}: does it do far more work each time than the job needs?",
+                LIMITS.run_seconds
+            ),
+        ),
+        _ => (
+            ErrorKind::Endless,
+            format!(
+                "your function did more than {} steps{when}: is there a loop that never ends?",
+                group(LIMITS.operations)
+            ),
+        ),
+    }
+}
+
+/// A string, list or map grown past its bound.
+fn too_large(what: &str, when: &str) -> String {
+    let thing = if what.contains("string") {
+        format!(
+            "a string longer than {} characters",
+            group(LIMITS.string as u64)
+        )
+    } else if what.contains("map") {
+        format!(
+            "a map of more than {} entries (counting the entries of maps inside it)",
+            group(LIMITS.map as u64)
+        )
+    } else {
+        format!(
+            "a list of more than {} items (counting the items of lists inside it)",
+            group(LIMITS.array as u64)
+        )
+    };
+    format!("your function made {thing}{when}: does something grow every time round a loop?")
 }
 
 /// Rhai's own message without its position (the error carries that).

@@ -16,12 +16,14 @@
 //! law, a behaviour or a coordinator, a potential-field primitive, the
 //! hybrid robot's sequencer, the hexapod's leg sequencer.
 
+pub mod clock;
 mod collections;
 mod error;
 mod maths;
 mod sandbox;
 mod script;
 pub mod value;
+mod words;
 
 pub use error::{ErrorKind, ScriptError, When};
 pub use rhai::{Array, Dynamic, Map};

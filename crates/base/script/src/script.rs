@@ -7,6 +7,7 @@ use rhai::{AST, CallFnOptions, Dynamic, Engine, Map, Scope};
 
 use crate::error::{ScriptError, When};
 use crate::sandbox::{Budget, LIMITS, Output, Sink, Trail, engine, locating};
+use crate::value;
 
 /// The function a hook calls, as the learner must write it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -33,8 +34,11 @@ pub struct Script {
     sink: Sink,
     /// Shared with the engine: what the call under way may use.
     budget: Rc<Budget>,
-    /// Operations this script's calls have used in this run.
+    /// Operations this script's calls have used in this run, and seconds.
     spent: Cell<u64>,
+    seconds: Cell<f64>,
+    /// The code, for errors that quote it.
+    source: Rc<str>,
     ast: Rc<AST>,
     signature: Signature,
     /// `this` inside the learner's function: a map that starts empty and
@@ -72,6 +76,8 @@ impl Script {
     /// Compile `source`, which must define `signature`'s function with its
     /// parameters. A syntax error names the line and column.
     pub fn compile(source: &str, signature: Signature) -> Result<Script, ScriptError> {
+        // A byte-order mark, as some editors save files, is not code.
+        let source = source.strip_prefix('\u{feff}').unwrap_or(source);
         if source.len() > MAX_SOURCE {
             return Err(ScriptError::too_long(source.len(), MAX_SOURCE));
         }
@@ -80,7 +86,7 @@ impl Script {
         let engine = engine(&sink, &budget);
         let ast = engine
             .compile(source)
-            .map_err(|e| ScriptError::syntax(&e))?;
+            .map_err(|e| ScriptError::syntax(&e, source))?;
         let found: Vec<usize> = ast
             .iter_functions()
             .filter(|f| f.name == signature.name)
@@ -94,6 +100,8 @@ impl Script {
             sink,
             budget,
             spent: Cell::new(0),
+            seconds: Cell::new(0.0),
+            source: source.into(),
             ast: Rc::new(ast),
             signature,
             memory: Dynamic::from_map(Map::new()),
@@ -131,9 +139,9 @@ impl Script {
         at: When,
     ) -> Result<Call, ScriptError> {
         *self.sink.borrow_mut() = Output::default();
-        self.budget.used.set(0);
         let left = LIMITS.run_operations.saturating_sub(self.spent.get());
-        self.budget.left.set(left);
+        let seconds = LIMITS.run_seconds - self.seconds.get();
+        self.budget.start(left, seconds);
         let before = (memory.clone(), args.clone());
         let options = CallFnOptions::new().eval_ast(false).bind_this_ptr(memory);
         let result = self.engine.call_fn_with_options::<Dynamic>(
@@ -145,19 +153,36 @@ impl Script {
         );
         let output = std::mem::take(&mut *self.sink.borrow_mut());
         self.spent.set(self.spent.get() + self.budget.used.get());
-        match result {
-            Ok(value) => {
-                *self.last.borrow_mut() = Some(before);
-                Ok(Call { value, output })
-            }
+        self.seconds.set(self.seconds.get() + self.budget.elapsed());
+        let value = match result {
+            Ok(value) => self.kept(value, memory, at)?,
             Err(e) => {
-                let error = ScriptError::run(&e, at, self.signature);
-                Err(match error.line {
+                let error = ScriptError::run(&e, at, self.signature, &self.source);
+                return Err(match error.line {
                     Some(_) => error,
                     None => error.at(self.locate(before)),
-                })
+                });
             }
-        }
+        };
+        *self.last.borrow_mut() = Some(before);
+        Ok(Call { value, output })
+    }
+
+    /// `value` and `memory` after a call, unless either nests lists or
+    /// maps deeper than the sandbox allows (then both are freed a level
+    /// at a time and the call fails).
+    fn kept(&self, value: Dynamic, memory: &mut Dynamic, at: When) -> Result<Dynamic, ScriptError> {
+        let limit = LIMITS.nesting;
+        let what = if value::nesting(&value, limit) > limit {
+            "answered"
+        } else if value::nesting(memory, limit) > limit {
+            "kept in `this`"
+        } else {
+            return Ok(value);
+        };
+        value::dispose(value);
+        value::dispose(std::mem::replace(memory, Dynamic::from_map(Map::new())));
+        Err(ScriptError::nested(self.signature, what, at))
     }
 
     /// `error`, found in the last call's answer (its shape, a NaN), placed

@@ -43,7 +43,7 @@ fn hostile_scripts_stop_with_a_message_in_words() {
         (
             "fn control(rho, alpha, beta) { let a = []; a.pad(100000000, 0); [0.0, 0.0] }",
             ErrorKind::TooLarge,
-            "too large at t = 3.20 s",
+            "a list of more than 1 000 items (counting the items of lists inside it) at t = 3.20 s",
         ),
         (
             "fn control(rho, alpha, beta) { let s = \"x\"; loop { s += s; } }",
@@ -63,7 +63,7 @@ fn hostile_scripts_stop_with_a_message_in_words() {
         (
             "fn control(rho, alpha, beta) { [speed, 1.0] }",
             ErrorKind::Runtime,
-            "Variable not found: speed",
+            "there is no variable `speed` here",
         ),
     ];
     for (source, kind, words) in cases {
@@ -75,6 +75,73 @@ fn hostile_scripts_stop_with_a_message_in_words() {
         assert!(e.line.is_some() && e.column.is_some(), "{source}: {e:?}");
         // The host goes on: the same script can be called again.
         assert!(call(&mut s, 3.25).is_err());
+    }
+}
+
+/// A run as the simulations make it: up to 2 000 calls, one every
+/// 0.01 s, until one fails. Gives the error (if any) and the seconds taken.
+fn run(source: &str) -> (Option<kinolab_script::ScriptError>, f64) {
+    let mut s = compile(source);
+    let started = std::time::Instant::now();
+    let error = (0..2000).find_map(|k| call(&mut s, k as f64 * 0.01).err());
+    (error, started.elapsed().as_secs_f64())
+}
+
+#[test]
+fn runaway_scripts_stop_within_a_second_of_their_deadline() {
+    use kinolab_script::LIMITS;
+    let law = |body: &str| format!("fn control(rho, alpha, beta) {{\n{body}\n[0.0, 0.0]\n}}");
+    let cases = [
+        // Lists nested inside lists: bounded by the list's size, counted
+        // through the nesting, long before the stack is in danger.
+        (
+            law("let a = []; for i in 0..5000 { a = [a]; }"),
+            Some(ErrorKind::TooLarge),
+        ),
+        (
+            law("let a = []; loop { a = [a]; }"),
+            Some(ErrorKind::TooLarge),
+        ),
+        (
+            law("let a = []; for i in 0..100000 { a.push(i); }"),
+            Some(ErrorKind::TooLarge),
+        ),
+        // Each search of a long list is charged its length.
+        (
+            law("let a = []; a.pad(950, 1.5); for i in 0..20 { if 2.5 in a { print(i); } }"),
+            Some(ErrorKind::TooSlow),
+        ),
+        // A thousand lines a call: each print is charged 50 steps.
+        (
+            law("for i in 0..1000 { print(i); }"),
+            Some(ErrorKind::TooSlow),
+        ),
+        // A long list printed often: the text is charged.
+        (
+            law("let a = []; a.pad(999, 0.123456789); for i in 0..200 { print(a); }"),
+            Some(ErrorKind::Endless),
+        ),
+        // Copying a long list over and over: each copy is one step.
+        (
+            law("let a = []; a.pad(999, 1.5); let n = 0; while n < 10000 { let b = a; n += 1; }"),
+            Some(ErrorKind::TooSlow),
+        ),
+        // Notes that wrap themselves once a call.
+        (law("this.a = [this.a];"), Some(ErrorKind::TooLarge)),
+    ];
+    for (source, kind) in cases {
+        let (error, seconds) = run(&source);
+        assert_eq!(error.as_ref().map(|e| e.kind), kind, "{source}: {error:?}");
+        if let Some(e) = &error {
+            assert!(
+                e.line.is_some() || e.kind == ErrorKind::TooLarge,
+                "{source}: {e:?}"
+            );
+        }
+        assert!(
+            seconds < LIMITS.run_seconds + 1.0,
+            "{source}: {seconds:.1} s"
+        );
     }
 }
 
@@ -344,4 +411,139 @@ fn reading_past_the_end_of_a_list_names_the_line() {
     let e = s.call(Vec::new(), 0.0).unwrap_err();
     assert_eq!(e.kind, ErrorKind::Runtime, "{e}");
     assert_eq!(e.line, Some(3), "{e:?}");
+}
+
+/// The first error `source` gives, compiling or calling `f(p)` once with
+/// `p` a map the lab hands out.
+fn first_error(source: &str) -> kinolab_script::ScriptError {
+    use kinolab_script::value::{map, numbers};
+    let f = Signature {
+        name: "f",
+        params: &["p"],
+    };
+    let mut s = match Script::compile(source, f) {
+        Ok(s) => s,
+        Err(e) => return e,
+    };
+    let bumpers = map([("front", false.into()), ("left", false.into())]);
+    let p = map([
+        ("rays", numbers(&[1.0, 2.0])),
+        ("bumpers", bumpers),
+        ("t", number(0.5)),
+    ]);
+    s.call(vec![p], 0.5).unwrap_err()
+}
+
+#[test]
+fn errors_speak_a_beginners_language() {
+    let cases = [
+        // Whole numbers where decimals belong: the call rewritten.
+        (
+            "fn f(p) {\n  sqrt(9)\n}",
+            (2, "`sqrt` takes a decimal number: write `sqrt(9.0)`"),
+        ),
+        (
+            "fn f(p) {\n  let x = 4;\n  atan2(x, 2.0)\n}",
+            (
+                3,
+                "`atan2` takes a decimal number, and was given a whole number",
+            ),
+        ),
+        // A key the lab's map does not have: what it has instead.
+        (
+            "fn f(p) {\n  if p.bumper.front { 1 } else { 0 }\n}",
+            (2, "`p` has no `bumper`; it has `bumpers`, `rays`, `t`"),
+        ),
+        (
+            "fn f(p) {\n  p.bumpers.frnt\n}",
+            (2, "`p.bumpers` has no `frnt`; it has `front`, `left`"),
+        ),
+        // A missing `;` is blamed on the line it is missing from.
+        (
+            "fn f(p) {\n  let a = 1\n  return a;\n}",
+            (2, "a `;` is missing at the end of this line"),
+        ),
+        // Characters pasted from a formula or a slide.
+        (
+            "fn f(p) {\n  1.0 − p.t\n}",
+            (
+                2,
+                "`−` (a minus sign from a formula) is not understood here: type the ASCII `-` instead",
+            ),
+        ),
+        (
+            "fn f(p) {\n  let θ = 1.0;\n}",
+            (
+                2,
+                "`θ` (the Greek letter theta) is not understood here: type `theta` instead",
+            ),
+        ),
+        ("fn f(p) {\n  p.t ≤ 1.0\n}", (2, "type `<=` instead")),
+        // Nothing, where a number belongs.
+        (
+            "fn f(p) {\n  this.count + 1\n}",
+            (2, "`+` was given `()` (nothing) and a whole number"),
+        ),
+        (
+            "fn f(p) {\n  let a = [1, 2];\n  a[2]\n}",
+            (
+                3,
+                "asked for item 2 of a list of 2: items are numbered from 0 to 1",
+            ),
+        ),
+    ];
+    for (source, (line, words)) in cases {
+        let e = first_error(source);
+        assert!(e.message.contains(words), "{source}\n{}", e.message);
+        assert_eq!(e.line, Some(line), "{source}: {e:?}");
+    }
+    // `a[2]`: the syntax error's column is where the `;` belongs.
+    let e = first_error("fn f(p) {\n  let a = 1\n  return a;\n}");
+    assert_eq!(e.column, Some(12), "{e:?}");
+}
+
+#[test]
+fn a_learners_own_map_answers_nothing_for_a_key_not_yet_set() {
+    let f = Signature {
+        name: "f",
+        params: &[],
+    };
+    let mut s = Script::compile(
+        "fn f() { let m = #{}; let before = m.size; m.size = 2; [before, m.size, this.turn, this.n] }",
+        f,
+    )
+    .unwrap();
+    let out = s.call(Vec::new(), 0.0).unwrap();
+    assert_eq!(out.value.to_string(), "[(), 2, (), ()]");
+}
+
+#[test]
+fn a_byte_order_mark_is_not_code() {
+    let mut s = compile("\u{feff}fn control(rho, alpha, beta) { [rho, 0.0] }");
+    assert_eq!(call(&mut s, 0.0).unwrap(), [1.0, 0.0]);
+}
+
+#[test]
+fn lists_nested_to_the_bound_are_written_copied_and_dropped_on_a_small_stack() {
+    // 999 levels, on a thread with a quarter of a test thread's stack
+    // (a browser's is about 1 MB): printing, joining into text, comparing,
+    // searching and dropping all work a level at a time, or stop early.
+    let worker = std::thread::Builder::new().stack_size(512 * 1024).spawn(|| {
+        let f = Signature {
+            name: "f",
+            params: &[],
+        };
+        let mut s = Script::compile(
+            "fn f() { let a = []; for i in 0..999 { a = [a]; } let b = a; print(a); let t = `${a}`; [a == b, [] in a, t.len() < 200] }",
+            f,
+        )
+        .unwrap();
+        s.call(Vec::new(), 0.0).map(|c| (c.value.to_string(), c.output.prints))
+    });
+    let (value, prints) = worker.unwrap().join().unwrap().unwrap();
+    assert_eq!(value, "[true, false, true]");
+    assert!(
+        prints[0].starts_with("[[[[") && prints[0].contains('…'),
+        "{prints:?}"
+    );
 }
