@@ -363,6 +363,45 @@ try {
     await reader.close();
   });
 
+  await check("a learner's runaway script never takes the page down", async () => {
+    // Code exercises run in a worker of their own: scripts that nest a
+    // list thousands deep, or that run until their deadline, end with a
+    // message at the line; meanwhile the page answers, and a lesson link
+    // works at once.
+    const coder = await context.newPage();
+    watch(coder, "code exercise");
+    const coding = "motion-control/programming-the-robot";
+    await coder.goto(`${server.url}?a11y#/${coding}`);
+    await waitForPage(coder, coding);
+    const editor = coder.locator("#kinolab-a11y textarea").first();
+    await editor.waitFor({ state: "attached", timeout: 10_000 });
+    const mirrored = () => coder.evaluate(() => document.getElementById("kinolab-a11y").innerText);
+    const run = async (code) => {
+      await editor.fill(code);
+      await coder.waitForTimeout(300);
+      await coder.getByRole("button", { name: "Run", exact: true }).first().evaluate((e) => e.click());
+    };
+    const law = (body) => `fn control(rho, alpha, beta) {\n${body}\n[0.0, 0.0]\n}`;
+    for (const body of ["let a = []; for i in 0..5000 { a = [a]; }", "let a = []; loop { a = [a]; }"]) {
+      await run(law(body));
+      await coder.waitForFunction(() => /a list of more than 1 000 items/.test(document.getElementById("kinolab-a11y").innerText), null, { timeout: 60_000 });
+      assert.match(await mirrored(), /line 2, column \d+/);
+    }
+    // A script that runs until its deadline; while it runs, another lesson.
+    await run(law("let a = []; a.pad(999, 1.5); let n = 0; while n < 10000 { let b = a; n += 1; }"));
+    await coder.waitForFunction(() => /Running your code/.test(document.getElementById("kinolab-a11y").innerText), null, { timeout: 10_000 });
+    const elsewhere = "motion-control/choosing-the-gains";
+    const asked = Date.now();
+    await coder.evaluate((a) => { location.hash = `#/${a}`; }, elsewhere);
+    await waitForPage(coder, elsewhere, 5_000);
+    assert.ok(Date.now() - asked < 5_000, "the page answered while the code ran");
+    await coder.goBack();
+    await waitForPage(coder, coding);
+    const shown = await coder.evaluate(() => document.getElementById("kinolab-error").style.display);
+    assert.notEqual(shown, "block", "no error box");
+    await coder.close();
+  });
+
   await check("no error box and no panic text", async () => {
     const text = await page.evaluate(() => document.body.innerText);
     assert.ok(!/panicked|internal error|could not start/i.test(text), text);

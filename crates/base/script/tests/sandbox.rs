@@ -547,3 +547,20 @@ fn lists_nested_to_the_bound_are_written_copied_and_dropped_on_a_small_stack() {
         "{prints:?}"
     );
 }
+
+#[test]
+fn nothing_is_neither_true_nor_false_but_compares_unequal() {
+    let f = Signature {
+        name: "f",
+        params: &[],
+    };
+    let mut s = Script::compile("fn f() { this.turning == true }", f).unwrap();
+    assert_eq!(s.call(Vec::new(), 0.0).unwrap().value.to_string(), "false");
+    let mut s = Script::compile("fn f() { if this.turning { 1 } else { 2 } }", f).unwrap();
+    let e = s.call(Vec::new(), 0.0).unwrap_err();
+    assert!(
+        e.message
+            .contains("expected true or false here, not `()` (nothing)"),
+        "{e}"
+    );
+}

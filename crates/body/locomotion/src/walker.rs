@@ -151,6 +151,12 @@ impl Walker {
         Ok((planned, call.output))
     }
 
+    /// Each foot's resting point, body frame, m: the middle of its stride,
+    /// on the ground.
+    pub fn neutral(&self) -> &[Vector3<f64>] {
+        &self.neutral
+    }
+
     /// Where leg `i`'s foot should be at `tau`, body frame.
     pub fn target(&self, i: usize, tau: f64) -> Vector3<f64> {
         let (beta, stride) = (self.gait.duty_factor, self.gait.stride);

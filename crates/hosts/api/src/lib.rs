@@ -27,6 +27,7 @@
 //!   class's scripts graded.
 
 mod error;
+mod parallel;
 mod source;
 
 pub mod behaviours;

@@ -66,21 +66,24 @@ fn exercise(id: &str) -> Result<Exercise, Error> {
     })
 }
 
-/// `kinolab script check SCRIPT --exercise ID`: the script on every world
-/// (or, with `held_back` false, only on those shown while working). A
-/// script that does not compile or stops on an error still answers.
+/// `kinolab script check SCRIPT --exercise ID [--all]`: the script on
+/// every world. A learner sees the visible worlds in full and how many of
+/// the held-back worlds passed; `all` (for instructors) shows every world
+/// in full. A script that does not compile or stops on an error still
+/// answers.
 #[derive(Debug, Clone)]
 pub struct CheckScript {
     pub exercise: String,
     pub source: String,
-    pub held_back: bool,
+    pub all: bool,
 }
 
 impl Operation for CheckScript {
     type Report = Check;
     fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
         let e = exercise(&self.exercise)?;
-        Ok(e.check(&self.source, self.held_back))
+        let check = e.check(&self.source, true);
+        Ok(if self.all { check } else { check.for_learner() })
     }
 }
 
@@ -89,20 +92,48 @@ impl Operation for CheckScript {
 pub struct Row {
     pub file: String,
     pub passed: bool,
-    /// Worlds passed, of all the exercise's worlds.
-    pub worlds_passed: usize,
-    pub worlds: usize,
-    /// The first world that failed and why, or the error that stopped it.
+    /// Visible and held-back worlds passed, each of how many.
+    pub visible: [usize; 2],
+    pub held_back: [usize; 2],
+    /// What stopped the code, if anything: `syntax`, `endless`, …, or
+    /// `unreadable` for a file that could not be read.
+    pub error_kind: Option<String>,
+    /// The first world that failed and why, the error that stopped the
+    /// code, or why the file could not be read.
     pub first_failure: Option<String>,
-    pub error: Option<kinolab_script::ScriptError>,
+    /// Something worth knowing that did not stop grading (a file read
+    /// with its bad bytes replaced).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub notice: Option<String>,
 }
 
-/// `kinolab script grade --exercise ID FILES...`: one row per script.
+/// A learner's file as the host read it.
+#[derive(Debug, Clone)]
+pub struct Submission {
+    /// The file's name, as given.
+    pub file: String,
+    /// Its text, or why there is none (missing, empty, not text).
+    pub source: Result<String, String>,
+    pub notice: Option<String>,
+}
+
+impl Submission {
+    /// A file read without trouble.
+    pub fn text(file: impl Into<String>, source: impl Into<String>) -> Self {
+        Self {
+            file: file.into(),
+            source: Ok(source.into()),
+            notice: None,
+        }
+    }
+}
+
+/// `kinolab script grade --exercise ID FILES...`: one row per script, in
+/// the order given, graded on every core.
 #[derive(Debug, Clone)]
 pub struct Grade {
     pub exercise: String,
-    /// Each script's name (a file's path) and text.
-    pub scripts: Vec<(String, String)>,
+    pub scripts: Vec<Submission>,
 }
 
 /// The most scripts graded in one call.
@@ -121,42 +152,79 @@ impl Operation for Grade {
                 ),
             ));
         }
-        Ok(self
-            .scripts
-            .iter()
-            .map(|(file, source)| row(file, &e.check(source, true)))
-            .collect())
+        Ok(crate::parallel::map(&self.scripts, |s| row(&e, s)))
     }
 }
 
-fn row(file: &str, c: &Check) -> Row {
+/// A submission graded: every world, the rows' counts split into visible
+/// and held back.
+fn row(e: &Exercise, s: &Submission) -> Row {
+    let worlds = (e.worlds)();
+    let count = |visible: bool| worlds.iter().filter(|w| w.visible == visible).count();
+    let (shown, held) = (count(true), count(false));
+    let source = match &s.source {
+        Ok(text) if text.trim().is_empty() => Err("the file is empty".to_owned()),
+        Ok(text) => Ok(text),
+        Err(why) => Err(why.clone()),
+    };
+    let source = match source {
+        Ok(text) => text,
+        Err(why) => {
+            return Row {
+                file: s.file.clone(),
+                passed: false,
+                visible: [0, shown],
+                held_back: [0, held],
+                error_kind: Some("unreadable".into()),
+                first_failure: Some(why),
+                notice: s.notice.clone(),
+            };
+        }
+    };
+    let c = e.check(source, true);
+    let passed = |visible: bool| {
+        c.worlds
+            .iter()
+            .filter(|w| w.visible == visible && w.passed)
+            .count()
+    };
     let failed = c.worlds.iter().find(|w| !w.passed);
     let first_failure = match (&c.error, failed) {
         (_, Some(w)) => Some(format!("{}: {}", w.name, w.reason.as_deref().unwrap_or(""))),
         (Some(e), None) => Some(format!("does not compile: {e}")),
         (None, None) => None,
     };
+    let error_kind = c
+        .error
+        .as_ref()
+        .and_then(|e| serde_json::to_value(e.kind).ok())
+        .and_then(|v| v.as_str().map(str::to_owned));
     Row {
-        file: file.to_owned(),
+        file: s.file.clone(),
         passed: c.passed,
-        worlds_passed: c.worlds.iter().filter(|w| w.passed).count(),
-        worlds: c.worlds.len(),
+        visible: [passed(true), shown],
+        held_back: [passed(false), held],
+        error_kind,
         first_failure,
-        error: c.error.clone(),
+        notice: s.notice.clone(),
     }
 }
 
-/// The rows as CSV: `file,passed,worlds_passed,worlds,first_failure`.
+/// The rows as CSV: `file,passed,visible,held_back,error_kind,first_failure`,
+/// the counts written `P/N`.
 pub fn csv(rows: &[Row]) -> String {
     let quote = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
-    let mut out = String::from("file,passed,worlds_passed,worlds,first_failure\n");
+    let mut out = String::from("file,passed,visible,held_back,error_kind,first_failure\n");
     for r in rows {
         out.push_str(&format!(
-            "{},{},{},{},{}\n",
+            "{},{},{}/{},{}/{},{},{}\n",
             quote(&r.file),
             r.passed,
-            r.worlds_passed,
-            r.worlds,
+            r.visible[0],
+            r.visible[1],
+            r.held_back[0],
+            r.held_back[1],
+            r.error_kind.as_deref().unwrap_or(""),
             quote(r.first_failure.as_deref().unwrap_or(""))
         ));
     }

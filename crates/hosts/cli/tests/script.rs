@@ -77,8 +77,36 @@ fn a_check_answers_whether_or_not_the_script_passed() {
     let check: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(check["exercise"], "control-park");
     assert_eq!(check["passed"], true);
-    assert_eq!(check["worlds"].as_array().unwrap().len(), 5);
+    // The visible worlds in full; of the held-back ones, only the tally.
+    assert_eq!(check["worlds"].as_array().unwrap().len(), 2);
+    assert!(
+        check["worlds"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|w| w["visible"] == true)
+    );
+    assert_eq!(
+        check["held_back"],
+        serde_json::json!({ "passed": 3, "of": 3 })
+    );
     assert!(check["worlds"][0]["metrics"]["distance"].as_f64().unwrap() < 0.01);
+    // `--all`: every world in full, for the instructor.
+    let (code, out, _) = kinolab(
+        &[
+            "script",
+            "check",
+            "control-park.rhai",
+            "--exercise",
+            "control-park",
+            "--all",
+        ],
+        &dir,
+    );
+    assert_eq!(code, 0);
+    let all: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(all["worlds"].as_array().unwrap().len(), 5);
+    assert!(all.get("held_back").is_none(), "{all}");
 
     let (code, out, _) = kinolab(
         &[
@@ -93,6 +121,11 @@ fn a_check_answers_whether_or_not_the_script_passed() {
     assert_eq!(code, 0);
     let check: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(check["passed"], false);
+    // It happens to arrive facing the right way from straight behind.
+    assert_eq!(
+        check["held_back"],
+        serde_json::json!({ "passed": 1, "of": 3 })
+    );
     let reasons: Vec<&str> = check["worlds"]
         .as_array()
         .unwrap()
@@ -181,10 +214,20 @@ fn a_check_answers_whether_or_not_the_script_passed() {
 #[test]
 fn a_class_is_graded_one_row_per_file_as_json_or_csv() {
     let dir = folder("grade");
+    // A missing, an empty and a Latin-1 file stay rows of their own.
+    std::fs::write(dir.join("empty.rhai"), "").unwrap();
+    let mut latin1 = b"// caf\xe9\n".to_vec();
+    latin1.extend(std::fs::read(dir.join("field-pull.rhai")).unwrap());
+    std::fs::write(dir.join("latin1.rhai"), latin1).unwrap();
+    std::fs::write(dir.join("broken.rhai"), "fn field(x, y) {\n  [x,\n").unwrap();
     let files = [
         "field-pull.rhai",
         "field-pull.push.rhai",
         "field-pull.x-only.rhai",
+        "missing.rhai",
+        "empty.rhai",
+        "latin1.rhai",
+        "broken.rhai",
     ];
     let mut args = vec!["script", "grade", "--exercise", "field-pull"];
     args.extend(files);
@@ -195,8 +238,11 @@ fn a_class_is_graded_one_row_per_file_as_json_or_csv() {
         .iter()
         .map(|r| r["passed"].as_bool().unwrap())
         .collect();
-    assert_eq!(passed, [true, false, false]);
-    assert_eq!(rows[0]["worlds_passed"], 5);
+    assert_eq!(passed, [true, false, false, false, false, true, false]);
+    let names: Vec<&str> = rows.iter().map(|r| r["file"].as_str().unwrap()).collect();
+    assert_eq!(names, files, "one row per file, in the order given");
+    assert_eq!(rows[0]["visible"], serde_json::json!([2, 2]));
+    assert_eq!(rows[0]["held_back"], serde_json::json!([3, 3]));
     assert_eq!(rows[0]["first_failure"], Value::Null);
     assert!(
         rows[2]["first_failure"]
@@ -204,19 +250,116 @@ fn a_class_is_graded_one_row_per_file_as_json_or_csv() {
             .unwrap()
             .contains("stuck at (4.00")
     );
+    assert_eq!(rows[3]["error_kind"], "unreadable");
+    assert!(
+        rows[3]["first_failure"]
+            .as_str()
+            .unwrap()
+            .contains("cannot read"),
+        "{}",
+        rows[3]
+    );
+    assert_eq!(rows[4]["first_failure"], "the file is empty");
+    assert!(
+        rows[5]["notice"].as_str().unwrap().contains("not UTF-8"),
+        "{}",
+        rows[5]
+    );
+    // A script that does not compile ran on no world, of all of them.
+    assert_eq!(rows[6]["error_kind"], "syntax");
+    assert_eq!(rows[6]["visible"], serde_json::json!([0, 2]));
+    assert_eq!(rows[6]["held_back"], serde_json::json!([0, 3]));
 
     args.push("--csv");
     let (code, out, _) = kinolab(&args, &dir);
     assert_eq!(code, 0);
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines[0], "file,passed,worlds_passed,worlds,first_failure");
-    assert_eq!(lines[1], "\"field-pull.rhai\",true,5,5,\"\"");
+    assert_eq!(
+        lines[0],
+        "file,passed,visible,held_back,error_kind,first_failure"
+    );
+    assert_eq!(lines[1], "\"field-pull.rhai\",true,2/2,3/3,,\"\"");
     assert!(
         lines[3].starts_with("\"field-pull.x-only.rhai\",false,"),
         "{}",
         lines[3]
     );
-    assert_eq!(lines.len(), 4);
+    assert!(
+        lines[7].starts_with("\"broken.rhai\",false,0/2,0/3,syntax,"),
+        "{}",
+        lines[7]
+    );
+    assert_eq!(lines.len(), 8);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn held_back_worlds_stay_held_back() {
+    let dir = folder("held");
+    // A script that throws what it is given, in the held-back worlds only
+    // (their starts are not the visible ones').
+    std::fs::write(
+        dir.join("spy.rhai"),
+        "fn field(x, y) {\n  if x > 5.0 || y < -1.0 { throw `at ${x}, ${y}`; }\n  [4.0 - x, -y]\n}\n",
+    )
+    .unwrap();
+    let (code, out, _) = kinolab(
+        &["script", "check", "spy.rhai", "--exercise", "field-pull"],
+        &dir,
+    );
+    assert_eq!(code, 0);
+    assert!(
+        !out.contains("beyond the goal") && !out.contains("6.00"),
+        "{out}"
+    );
+    let check: Value = serde_json::from_str(&out).unwrap();
+    let message = check["error"]["message"].as_str().unwrap();
+    assert!(message.starts_with("in a world held back"), "{message}");
+    assert!(!message.contains("at 6"), "{message}");
+    assert_eq!(check["error"]["kind"], "runtime");
+    // The instructor sees all of it.
+    let (_, out, _) = kinolab(
+        &[
+            "script",
+            "check",
+            "spy.rhai",
+            "--exercise",
+            "field-pull",
+            "--all",
+        ],
+        &dir,
+    );
+    assert!(out.contains("from beyond the goal"), "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_script_saved_by_another_editor_is_read_as_written() {
+    let dir = folder("editors");
+    let model = std::fs::read(dir.join("control-park.rhai")).unwrap();
+    // A byte-order mark and Windows line ends.
+    let mut bom = b"\xef\xbb\xbf".to_vec();
+    bom.extend(
+        String::from_utf8(model.clone())
+            .unwrap()
+            .replace('\n', "\r\n")
+            .bytes(),
+    );
+    std::fs::write(dir.join("bom.rhai"), bom).unwrap();
+    // Latin-1, with an accent in a comment.
+    let mut latin1 = b"// na\xefve\n".to_vec();
+    latin1.extend(&model);
+    std::fs::write(dir.join("latin1.rhai"), latin1).unwrap();
+    for (file, notice) in [("bom.rhai", false), ("latin1.rhai", true)] {
+        let (code, out, err) = kinolab(
+            &["script", "check", file, "--exercise", "control-park"],
+            &dir,
+        );
+        assert_eq!(code, 0, "{file}: {err}");
+        let check: Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(check["passed"], true, "{file}: {check}");
+        assert_eq!(err.contains("not UTF-8"), notice, "{file}: {err}");
+    }
     let _ = std::fs::remove_dir_all(dir);
 }
 

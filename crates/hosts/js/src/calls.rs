@@ -291,11 +291,11 @@ pub fn exercises() -> Reply {
     ask(&kinolab_api::script::Exercises)
 }
 
-pub fn check_script(exercise: String, source: String, held_back: Option<bool>) -> Reply {
+pub fn check_script(exercise: String, source: String, all: Option<bool>) -> Reply {
     ask(&kinolab_api::script::CheckScript {
         exercise,
         source,
-        held_back: held_back.unwrap_or(true),
+        all: all.unwrap_or(false),
     })
 }
 
@@ -304,6 +304,9 @@ pub fn grade_scripts(exercise: String, scripts: Value) -> Reply {
     let scripts: std::collections::BTreeMap<String, String> = arg("scripts", scripts)?;
     ask(&kinolab_api::script::Grade {
         exercise,
-        scripts: scripts.into_iter().collect(),
+        scripts: scripts
+            .into_iter()
+            .map(|(file, text)| kinolab_api::script::Submission::text(file, text))
+            .collect(),
     })
 }

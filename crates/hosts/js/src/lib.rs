@@ -382,20 +382,20 @@ pub fn exercises() -> Result<JsValue, JsError> {
 
 /// What `kinolab script check` prints for a learner's `source`: `{
 /// exercise, passed, worlds: [{ name, visible, passed, reason, time,
-/// metrics, error }], error }`. With `heldBack` false only the worlds shown
-/// while working run.
+/// metrics, error }], held_back: { passed, of }, error }`, the visible
+/// worlds in full. With `all` true (`--all`), every world in full.
 #[wasm_bindgen(js_name = checkScript)]
 pub fn check_script(
     exercise: String,
     source: String,
-    held_back: Option<bool>,
+    all: Option<bool>,
 ) -> Result<JsValue, JsError> {
-    to_js(calls::check_script(exercise, source, held_back))
+    to_js(calls::check_script(exercise, source, all))
 }
 
 /// What `kinolab script grade` prints: one row per script of `scripts`
-/// (an object of sources by name), `[{ file, passed, worlds_passed,
-/// worlds, first_failure, error }]`.
+/// (an object of sources by name), `[{ file, passed, visible: [P, N],
+/// held_back: [P, N], error_kind, first_failure }]`.
 #[wasm_bindgen(js_name = gradeScripts)]
 pub fn grade_scripts(exercise: String, scripts: JsValue) -> Result<JsValue, JsError> {
     to_js(calls::grade_scripts(exercise, from_js("scripts", scripts)?))

@@ -363,7 +363,7 @@ fn hostile_scripts_stop_in_the_browser_and_the_page_goes_on() {
         );
     }
     // The page is still alive: the model law passes every world.
-    let model = "fn control(rho, alpha, beta) { [3.0 * rho, 8.0 * alpha - 1.5 * beta] }";
+    let model = "fn control(rho, alpha, beta) { let v = 3.0 * rho; let w = 8.0 * alpha - 1.5 * beta; let k = max(1.0, max(abs(v) / 0.5, abs(w) / 2.0)); [v / k, w / k] }";
     let report = kinolab_js::check_script("control-park".into(), model.into(), Some(true)).unwrap();
     assert_eq!(get(&report, "passed").as_bool(), Some(true));
 }

@@ -8,6 +8,8 @@
 //!   from a grid of starts and kept only where the Jacobian says "stable";
 //! - [`descend`]: a point robot stepping down the field, and a unicycle
 //!   following it with a heading controller;
+//! - [`follow`]: a point robot that takes the field as its velocity, up
+//!   to a top speed, and may not pass through an obstacle;
 //! - [`remedy`]: ways out of local minima (noise, avoid-the-past,
 //!   navigation templates, wall following) and a wavefront navigation
 //!   function with no local minima at all;
@@ -21,6 +23,7 @@ pub mod descend;
 pub mod exercise;
 mod field;
 pub mod file;
+pub mod follow;
 pub mod minima;
 pub mod primitive;
 pub mod remedy;

@@ -26,6 +26,11 @@ fn main() -> eframe::Result {
 fn main() {
     use wasm_bindgen::JsCast as _;
 
+    // In the worker that runs learners' code (see `web::scripts`) there is
+    // no page: the module is there only for its exported functions.
+    if web_sys::window().is_none() {
+        return;
+    }
     eframe::WebLogger::init(log::LevelFilter::Warn).ok();
     let runner = eframe::WebRunner::new();
     // eframe installed its panic hook; add ours on top so a panic is shown

@@ -8,6 +8,7 @@ use crate::shell::KinolabApp;
 
 pub mod a11y;
 pub mod assets;
+pub mod scripts;
 pub mod storage;
 
 /// How many recent frames' CPU times are kept for the benchmark.

@@ -126,7 +126,12 @@ pub fn create(cc: &eframe::CreationContext<'_>, hash: &str) -> KinolabApp {
         }
         crate::web::storage::listen(&cc.egui_ctx);
         crate::web::a11y::install(&cc.egui_ctx);
+        crate::web::scripts::install();
     }
+    #[cfg(not(target_arch = "wasm32"))]
+    kinolab_widgets::code::runner::install(|| {
+        Box::new(kinolab_widgets::code::runner::Threaded::default())
+    });
     #[cfg(target_arch = "wasm32")]
     if crate::web::reduced_motion() {
         kinolab_widgets::theme::reduce_motion(&cc.egui_ctx);

@@ -10,10 +10,17 @@ use kinolab_world::{EventKind, Vec2};
 
 use crate::{Exercise, Hook, Outcome, World};
 
-/// One run: the arena with its surprises.
+/// One run: the arena with its surprises, and how many plans a sequencer
+/// that replans only when it must needs there at most.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trial {
     pub setup: ArenaSetup,
+    pub max_plans: usize,
+}
+
+/// Plans allowed: the first, one for each surprise, and two to spare.
+fn plan_budget(setup: &ArenaSetup) -> usize {
+    3 + setup.surprises.len()
 }
 
 const STARTER: &str = r#"// state.t, state.at ([x, y]), state.goal ([x, y] or ()),
@@ -34,11 +41,11 @@ pub const EXERCISES: [Exercise; 1] = [Exercise {
     hook: Hook::Sequencer,
     signature: kinolab_architectures::paradigm::scripted::SIGNATURE,
     title: "Replan when the world changes",
-    task: "The starter plans once and follows the plan. Make the sequencer replan when it must, so the hybrid robot reaches the goal without touching anything when a door closes on its way or the goal moves.",
+    task: "The starter plans once and follows the plan. Make the sequencer replan when it must, and only then, so the hybrid robot reaches the goal without touching anything when a door closes on its way or the goal moves. Planning costs time: a world with one surprise allows four plans at most.",
     starter: STARTER,
     hints: &[
         "The map tells you when the way ahead is blocked: `state.blocked`.",
-        "When the goal moves, the plan was made for somewhere else: compare `state.planned_for` with `state.goal`.",
+        "When the goal moves, the plan was made for somewhere else: compare `state.planned_for` with `state.goal` (an unchanged goal is handed back exactly as it was).",
         "Planning takes time: while `state.planning` is true, a replan request is ignored and the old plan still holds.",
     ],
     worlds: replan,
@@ -48,7 +55,10 @@ fn world(name: &str, visible: bool, setup: ArenaSetup) -> World {
     World {
         name: name.into(),
         visible,
-        trial: crate::Trial::Arena(Trial { setup }),
+        trial: crate::Trial::Arena(Trial {
+            max_plans: plan_budget(&setup),
+            setup,
+        }),
     }
 }
 
@@ -97,7 +107,7 @@ fn replan() -> Vec<World> {
 
 pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
     let setup = setup(source, t);
-    judge(world, &setup, simulate(&setup, Architecture::Hybrid, EVERY))
+    judge(world, t, simulate(&setup, Architecture::Hybrid, EVERY))
 }
 
 /// Samples kept: one in this many steps.
@@ -112,11 +122,7 @@ pub(crate) fn setup(source: &str, t: &Trial) -> ArenaSetup {
 }
 
 /// The outcome of a run (or of one that could not start).
-pub(crate) fn judge(
-    world: &World,
-    setup: &ArenaSetup,
-    report: Result<ArenaReport, FieldError>,
-) -> Outcome {
+pub(crate) fn judge(world: &World, t: &Trial, report: Result<ArenaReport, FieldError>) -> Outcome {
     let mut out = Outcome::new(world);
     let report = match report {
         Ok(r) => r,
@@ -139,7 +145,12 @@ pub(crate) fn judge(
     } else if !m.reached {
         Some(format!(
             "not at the goal after {} s",
-            fixed(setup.duration, 0)
+            fixed(t.setup.duration, 0)
+        ))
+    } else if m.plans > t.max_plans {
+        Some(format!(
+            "planned {} times: replanning only when the world changes needs at most {} plans here",
+            m.plans, t.max_plans
         ))
     } else {
         None

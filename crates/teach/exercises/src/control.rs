@@ -16,7 +16,13 @@ pub struct Trial {
     /// How close is arrived: metres and degrees.
     pub within: f64,
     pub within_deg: f64,
+    /// The most the law may ask for: |v| in m/s and |ω| in rad/s. The
+    /// lab does not cap the command; the learner's law must.
+    pub speed_limit: Option<[f64; 2]>,
 }
+
+/// The speed limit of the parking exercise: 0.5 m/s and 2 rad/s.
+pub const PARK_LIMIT: [f64; 2] = [0.5, 2.0];
 
 const STARTER: &str = r#"// rho: distance to the goal (m); alpha: where the goal is seen, from the
 // robot's heading (rad); beta: the goal's heading, seen along the line to it.
@@ -34,13 +40,13 @@ pub const EXERCISES: [Exercise; 2] = [
         lesson: "motion-control/programming-the-robot",
         hook: Hook::Control,
         signature: kinolab_control::law::SIGNATURE,
-        title: "Park at the goal",
-        task: "Write the control law that brings the robot to the goal, the origin, facing along x: within 1 cm and 5° in 20 s, from every start.",
+        title: "Park under a speed limit",
+        task: "Write the control law that brings the robot to the goal, the origin, facing along x: within 1 cm and 5° in 20 s, from every start. The robot may never be asked for more than 0.5 m/s forwards or backwards, nor for more than 2 rad/s of turning.",
         starter: STARTER,
         hints: &[
-            "Drive in proportion to the distance: v = k · rho.",
-            "Turn towards the goal with alpha, and use beta to arrive facing the right way.",
-            "The loop is stable when k_rho > 0, k_beta < 0 and k_alpha > k_rho.",
+            "Start from the law of this lesson, then look at what it asks for at the first call: far from the goal, v = k · rho is far above 0.5 m/s.",
+            "Cutting v and omega to their limits separately changes the ratio omega / v, so the robot turns more or less sharply than the law asked.",
+            "Find the factor that brings the larger of |v| / 0.5 and |omega| / 2 down to 1, and multiply both by it.",
         ],
         worlds: park,
     },
@@ -51,11 +57,12 @@ pub const EXERCISES: [Exercise; 2] = [
         hook: Hook::Control,
         signature: kinolab_control::law::SIGNATURE,
         title: "A loop that runs five times a second",
-        task: "The same parking job, but your law runs only 5 times a second and the wheels turn at most 12 rad/s. Reach the goal within 2 cm and 5° in 15 s.",
+        task: "The same parking job, but your law runs only twice a second and the wheels turn at most 12 rad/s. Reach the goal within 2 cm and 5° in 15 s, from every start.",
         starter: STARTER,
         hints: &[
-            "Between two calls the robot drives on with the last command for 0.2 s.",
-            "Large gains overshoot when the command is held: try gains a few times smaller.",
+            "Between two calls the robot drives on with the last command for 0.5 s.",
+            "A held command keeps turning after the error it answered is gone: keep each gain times the period well below 1.",
+            "Gains that are too small are stable but slow: the robot must still arrive within 15 s.",
         ],
         worlds: slow_loop,
     },
@@ -77,6 +84,7 @@ fn park() -> Vec<World> {
         max_wheel_speed: None,
         within: 0.01,
         within_deg: 5.0,
+        speed_limit: Some(PARK_LIMIT),
     };
     vec![
         world("from the left", true, t([-1.0, 0.5, 0.0])),
@@ -91,10 +99,11 @@ fn slow_loop() -> Vec<World> {
     let t = |start| Trial {
         start,
         duration: 15.0,
-        rate: 5.0,
+        rate: 2.0,
         max_wheel_speed: Some(12.0),
         within: 0.02,
         within_deg: 5.0,
+        speed_limit: None,
     };
     vec![
         world("from the left", true, t([-1.5, 0.5, 0.0])),
@@ -136,7 +145,12 @@ pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
         .metric("distance", run.final_position_error)
         .metric("heading_deg", heading)
         .metric("path_length", run.path_length);
-    let reason = if let Some(d) = &run.diverged {
+    let over = t
+        .speed_limit
+        .and_then(|limit| over_limit(&run.calls, limit));
+    let reason = if let Some(over) = over {
+        Some(over)
+    } else if let Some(d) = &run.diverged {
         Some(format!(
             "ran away at t = {} s: the loop is unstable",
             fixed(d.t, 1)
@@ -153,4 +167,29 @@ pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
         Some(format!("arrived facing {}° off", fixed(heading, 0)))
     };
     out.judged(reason)
+}
+
+/// The first call that asked for more than `limit` ([m/s, rad/s]), in words.
+fn over_limit(calls: &[kinolab_control::law::LawCall], [v_max, w_max]: [f64; 2]) -> Option<String> {
+    // A hair over the limit is the limit, computed.
+    let slack = 1e-9;
+    calls.iter().find_map(|c| {
+        if c.v.abs() > v_max + slack {
+            Some(format!(
+                "asked for {} m/s at t = {} s; the limit is {} m/s",
+                fixed(c.v, 2),
+                fixed(c.t, 2),
+                fixed(v_max, 1)
+            ))
+        } else if c.omega.abs() > w_max + slack {
+            Some(format!(
+                "asked for {} rad/s of turning at t = {} s; the limit is {} rad/s",
+                fixed(c.omega, 2),
+                fixed(c.t, 2),
+                fixed(w_max, 1)
+            ))
+        } else {
+            None
+        }
+    })
 }

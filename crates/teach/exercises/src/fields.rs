@@ -1,9 +1,11 @@
 //! Potential fields: the learner's primitive `field(x, y)` joins a field's
-//! sum, and a point robot descends the whole field from several starts.
+//! sum, and a point robot takes the whole field as its velocity (up to a
+//! top speed) from several starts; it must reach the goal without passing
+//! through anything.
 
 use kinolab_common::display::fixed;
 use kinolab_fields::Field;
-use kinolab_fields::descend::{Outcome as Ended, Steps, descend};
+use kinolab_fields::follow::{Ended, Pace, follow};
 
 use crate::{Exercise, Hook, Outcome, World};
 
@@ -15,10 +17,12 @@ pub struct Trial {
     pub start: [f64; 2],
 }
 
-/// The descent's step, m, and the most steps it may take.
-pub(crate) const STEPS: Steps = Steps {
-    step: 0.01,
-    max_steps: 3000,
+/// The robot's pace: 0.05 s a step, at most 0.5 m/s, for at most 60 s.
+pub(crate) const PACE: Pace = Pace {
+    dt: 0.05,
+    max_speed: 0.5,
+    max_steps: 1200,
+    tolerance: 0.05,
 };
 
 const PULL_STARTER: &str = r#"// The goal is at (4, 0); two rocks push the robot away.
@@ -54,11 +58,12 @@ pub const EXERCISES: [Exercise; 2] = [
         hook: Hook::Field,
         signature: kinolab_fields::custom::SIGNATURE,
         title: "Pull towards the goal",
-        task: "The field has two rocks that push and no pull. Write the attractive primitive that brings the robot to the goal at (4, 0) from every start, past the rocks.",
+        task: "The field has two rocks that push and no pull. Write the attractive primitive that brings the robot to the goal at (4, 0) from every start, past the rocks and never through them. The robot moves with the field: its length is the speed, up to 0.5 m/s.",
         starter: PULL_STARTER,
         hints: &[
             "The pull points from (x, y) towards the goal: [4 − x, 0 − y].",
-            "Far away that vector is long and the rocks cannot compete; near the goal it vanishes. A unit vector, or a cap on the length, keeps it steady.",
+            "Far away that vector is long: it overpowers the rocks' push and drags the robot straight through them. Near the goal it shrinks, and the robot creeps.",
+            "Keep the pull's length steady: divide by the distance (a unit vector) and let it shrink only in the last few centimetres.",
         ],
         worlds: pull,
     },
@@ -69,10 +74,10 @@ pub const EXERCISES: [Exercise; 2] = [
         hook: Hook::Field,
         signature: kinolab_fields::custom::SIGNATURE,
         title: "Out of the U",
-        task: "In the U-shaped wall's field a robot that starts in the U's mouth ends trapped inside it. Add a field that gets it to the goal at (6, 0) from every start.",
+        task: "In the U-shaped wall's field a robot that starts in the U's mouth ends trapped inside it. Add a field that gets it to the goal at (6, 0) from every start, round the wall and never through it.",
         starter: ESCAPE_STARTER,
         hints: &[
-            "The trap is the point where the wall's push and the goal's pull cancel: your field must break that balance.",
+            "The trap is the point where the wall's push and the goal's pull cancel: your field must break that balance, and a plain stronger pull breaks it by walking the robot through the wall.",
             "Push the robot sideways, away from the axis y = 0, while it is in front of or inside the U.",
             "Only act where the trap is: outside that region return [0.0, 0.0] so the goal's pull finishes the job.",
         ],
@@ -128,27 +133,30 @@ pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
         Ok(f) => f,
         Err(e) => return out.judged(Some(format!("the field could not be read: {e}"))),
     };
-    let d = match descend(&field, t.start.into(), STEPS) {
-        Ok(d) => d,
-        Err(e) => return out.judged(Some(format!("the descent could not start: {e}"))),
+    let walk = match follow(&field, t.start.into(), PACE) {
+        Ok(w) => w,
+        Err(e) => return out.judged(Some(format!("the walk could not start: {e}"))),
     };
     out.error = field.failed();
-    out.time = Some(d.steps() as f64 * STEPS.step);
+    let steps = walk.path.len().saturating_sub(1);
+    let end = walk.path.last().copied().unwrap_or(t.start);
+    out.time = Some(steps as f64 * PACE.dt);
     out = out
-        .metric("steps", d.steps() as f64)
-        .metric("end_x", d.end[0])
-        .metric("end_y", d.end[1]);
-    let reason = match d.outcome {
+        .metric("steps", steps as f64)
+        .metric("top_speed", walk.top_speed)
+        .metric("end_x", end[0])
+        .metric("end_y", end[1]);
+    let seconds = fixed(steps as f64 * PACE.dt, 1);
+    let reason = match walk.ended {
         Ended::Reached => None,
-        Ended::Trapped => Some(format!(
-            "stuck at {} after {} steps",
-            place(d.end),
-            d.steps()
+        Ended::Hit { .. } => Some(format!(
+            "ran into an obstacle at {}, {seconds} s in: the field pushed it through",
+            place(end)
         )),
-        Ended::MaxSteps => Some(format!(
-            "not at the goal after {} steps: ended at {}",
-            d.steps(),
-            place(d.end)
+        Ended::Stalled => Some(format!("stuck at {} after {seconds} s", place(end))),
+        Ended::OutOfSteps => Some(format!(
+            "not at the goal after {seconds} s: ended at {}",
+            place(end)
         )),
     };
     out.judged(reason)

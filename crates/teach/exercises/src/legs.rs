@@ -16,7 +16,19 @@ pub struct Trial {
     pub min_progress: f64,
     /// The least stability margin allowed at any instant, m.
     pub min_margin: f64,
+    /// At most one foot in the air at any instant.
+    pub one_at_a_time: bool,
 }
+
+/// A step: each foot's longest time in the air, as a share of the cycle,
+/// and how high it must rise above its resting point then, m.
+pub const MIN_SWING: f64 = 1.0 / 12.0;
+pub const MIN_LIFT: f64 = 0.01;
+/// A foot that stands is on the ground: within this of its resting
+/// height, m. Feet that stand move together: within this of each other
+/// from one instant to the next, m.
+pub const GROUND: f64 = 0.005;
+pub const SLIP: f64 = 0.003;
 
 const STARTER: &str = r#"// leg: #{ name, index, x, y, z }: index 0-2 the left legs front to back,
 // 3-5 the right; (x, y, z) the foot's resting point, body frame, m.
@@ -35,7 +47,7 @@ pub const EXERCISES: [Exercise; 2] = [
         hook: Hook::Legs,
         signature: kinolab_locomotion::walker::FOOT,
         title: "Walk on six legs",
-        task: "Write the leg sequencer: every foot must leave the ground at some point, the body must move forwards at least 5 cm a cycle, and at every instant the feet on the ground must hold the centre of mass inside their support polygon.",
+        task: "Write the leg sequencer. Every foot must take a real step: in the air for at least a twelfth of the cycle, rising at least 1 cm. Feet on the ground must stay on it and move together, as the body moves over them. The body must move forwards at least 5 cm a cycle, and at every instant the feet on the ground must hold the centre of mass inside their support polygon.",
         starter: STARTER,
         hints: &[
             "A foot on the ground slides backwards (the body moves forwards over it); a lifted foot swings forwards again, a little above the ground.",
@@ -47,16 +59,16 @@ pub const EXERCISES: [Exercise; 2] = [
     Exercise {
         id: "legs-careful",
         unit: "legged-locomotion",
-        lesson: "legged-locomotion/balance",
+        lesson: "legged-locomotion/gaits",
         hook: Hook::Legs,
         signature: kinolab_locomotion::walker::FOOT,
         title: "A careful walker",
-        task: "Now the hexapod carries a load: at every instant the centre of mass must stay at least 8 cm inside the support polygon, and the body must still move at least 3 cm a cycle.",
+        task: "Now the hexapod carries a load. Lift one foot at a time, so that five always stand; keep the centre of mass at least 8 cm inside the support polygon at every instant; and still move the body at least 3 cm a cycle, with real steps as before.",
         starter: STARTER,
         hints: &[
-            "A tripod has only three feet down at a time: its margin is small.",
-            "Lift one leg at a time, so five feet always stand.",
-            "Six legs, six moments: lift leg i while the phase is between i/6 and (i + 1)/6.",
+            "Six legs, six moments: give leg i the phase from i/6 to (i + 1)/6 to swing in, and let it stand the rest of the cycle.",
+            "A foot that stands five sixths of the cycle slides back slowly; it must swing forwards the same distance in its sixth.",
+            "Which leg swings after which matters for the margin: a foot just set down next to the one lifting keeps the polygon wide. Try swinging the legs of one side from the back to the front.",
         ],
         worlds: careful,
     },
@@ -76,6 +88,7 @@ fn walk() -> Vec<World> {
         samples,
         min_progress: 0.05,
         min_margin: 0.0,
+        one_at_a_time: false,
     };
     vec![
         world("level body", true, t([0.0, 0.0], 24)),
@@ -91,6 +104,7 @@ fn careful() -> Vec<World> {
         samples,
         min_progress: 0.03,
         min_margin: 0.08,
+        one_at_a_time: true,
     };
     vec![
         world("level body", true, t([0.0, 0.0], 36)),
@@ -135,7 +149,8 @@ pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
             Err(e) => return out.judged(Some(format!("the legs could not be placed: {e}"))),
         }
     }
-    let reason = judge(&steps, t);
+    let rest: Vec<f64> = walker.neutral().iter().map(|n| n.z).collect();
+    let reason = judge(&steps, &rest, t);
     let lowest = steps
         .iter()
         .map(|s| s.margin.unwrap_or(f64::NEG_INFINITY))
@@ -147,62 +162,163 @@ pub(crate) fn run(source: &str, world: &World, t: &Trial) -> Outcome {
     out.judged(reason.map(|(_, why)| why))
 }
 
-/// The first thing wrong with a walk, and the phase it happened at.
-fn judge(steps: &[Step], t: &Trial) -> Option<(f64, String)> {
-    for s in steps {
-        if let Some(leg) = s.unreachable.first() {
-            return Some((
-                s.tau,
-                format!(
-                    "the {leg} foot could not reach its target at phase {}",
-                    fixed(s.tau, 3)
-                ),
-            ));
-        }
-        match s.margin {
-            None => {
-                let down = s.stance.iter().filter(|d| **d).count();
-                return Some((
-                    s.tau,
-                    format!(
-                        "fell at phase {}: only {down} feet on the ground",
-                        fixed(s.tau, 3)
-                    ),
-                ));
-            }
-            Some(m) if m <= t.min_margin => {
-                let why = if t.min_margin > 0.0 {
-                    format!(
-                        "the margin fell to {} cm at phase {}, under {} cm",
-                        fixed(m * 100.0, 1),
-                        fixed(s.tau, 3),
-                        fixed(t.min_margin * 100.0, 0)
-                    )
-                } else {
-                    format!(
-                        "fell at phase {}: the centre of mass left the support polygon",
-                        fixed(s.tau, 3)
-                    )
-                };
-                return Some((s.tau, why));
-            }
-            Some(_) => {}
-        }
+/// The first thing wrong with a walk, and the phase it happened at
+/// (`rest`: each foot's resting height, m).
+fn judge(steps: &[Step], rest: &[f64], t: &Trial) -> Option<(f64, String)> {
+    steps
+        .iter()
+        .find_map(|s| instant(s, rest, t))
+        .or_else(|| slipping(steps))
+        .or_else(|| stepping(steps, rest))
+        .or_else(|| {
+            let end = steps.last().map_or(0.0, |s| s.tau);
+            let moved = progress(steps);
+            (moved < t.min_progress).then(|| {
+                let why = format!(
+                    "the body moved {} cm a cycle, not the {} cm asked",
+                    fixed(moved * 100.0, 1),
+                    fixed(t.min_progress * 100.0, 0)
+                );
+                (end, why)
+            })
+        })
+}
+
+/// What is wrong at one instant: a foot out of reach, a standing foot in
+/// the air, too many feet lifted, the body falling or too near to it.
+fn instant(s: &Step, rest: &[f64], t: &Trial) -> Option<(f64, String)> {
+    let phase = fixed(s.tau, 3);
+    if let Some(leg) = s.unreachable.first() {
+        return Some((
+            s.tau,
+            format!("the {leg} foot could not reach its target at phase {phase}"),
+        ));
     }
-    let end = steps.last().map_or(0.0, |s| s.tau);
-    if let Some(i) = (0..LEGS.len()).find(|&i| steps.iter().all(|s| s.stance.get(i) == Some(&true)))
-    {
-        return Some((end, format!("the {} foot never left the ground", LEGS[i])));
+    let floating = (0..LEGS.len()).find(|&i| s.stance[i] && s.targets[i][2] - rest[i] > GROUND);
+    if let Some(i) = floating {
+        let above = (s.targets[i][2] - rest[i]) * 100.0;
+        let why = format!(
+            "the {} foot is said to stand at phase {phase}, but it is {} cm above the ground",
+            LEGS[i],
+            fixed(above, 1)
+        );
+        return Some((s.tau, why));
     }
-    let moved = progress(steps);
-    (moved < t.min_progress).then(|| {
-        (
-            end,
+    let up: Vec<&str> = (0..LEGS.len())
+        .filter(|&i| !s.stance[i])
+        .map(|i| LEGS[i])
+        .collect();
+    if t.one_at_a_time && up.len() > 1 {
+        let why = format!(
+            "{} feet were in the air at phase {phase} ({}): a careful walker lifts one at a time",
+            up.len(),
+            up.join(", ")
+        );
+        return Some((s.tau, why));
+    }
+    match s.margin {
+        None => Some((
+            s.tau,
             format!(
-                "the body moved {} cm a cycle, not the {} cm asked",
-                fixed(moved * 100.0, 1),
-                fixed(t.min_progress * 100.0, 0)
+                "fell at phase {phase}: only {} feet on the ground",
+                6 - up.len()
             ),
-        )
+        )),
+        Some(m) if m <= t.min_margin && t.min_margin > 0.0 => Some((
+            s.tau,
+            format!(
+                "the margin fell to {} cm at phase {phase}, under {} cm",
+                fixed(m * 100.0, 1),
+                fixed(t.min_margin * 100.0, 0)
+            ),
+        )),
+        Some(m) if m <= t.min_margin => Some((
+            s.tau,
+            format!("fell at phase {phase}: the centre of mass left the support polygon"),
+        )),
+        Some(_) => None,
+    }
+}
+
+/// A foot that stands but slides against the others: between two
+/// instants, the feet on the ground at both must move alike.
+fn slipping(steps: &[Step]) -> Option<(f64, String)> {
+    steps.windows(2).find_map(|w| {
+        let both: Vec<usize> = (0..LEGS.len())
+            .filter(|&i| w[0].stance[i] && w[1].stance[i])
+            .collect();
+        let moved = |i: usize| {
+            let (a, b) = (w[0].targets[i], w[1].targets[i]);
+            [b[0] - a[0], b[1] - a[1], b[2] - a[2]]
+        };
+        let n = both.len() as f64;
+        let mean = both.iter().fold([0.0; 3], |acc, &i| {
+            let d = moved(i);
+            [acc[0] + d[0] / n, acc[1] + d[1] / n, acc[2] + d[2] / n]
+        });
+        let off = |i: usize| {
+            let d = moved(i);
+            (d[0] - mean[0]).hypot(d[1] - mean[1]).hypot(d[2] - mean[2])
+        };
+        let i = both.iter().copied().find(|&i| off(i) > SLIP)?;
+        let why = format!(
+            "the {} foot slid against the other feet on the ground between phase {} and {}: feet that stand move together, as the body moves over them",
+            LEGS[i],
+            fixed(w[0].tau, 3),
+            fixed(w[1].tau, 3)
+        );
+        Some((w[1].tau, why))
     })
+}
+
+/// A foot that never takes a real step: never lifted, lifted too briefly,
+/// or swung without rising.
+fn stepping(steps: &[Step], rest: &[f64]) -> Option<(f64, String)> {
+    // The last instant is the first again (phase 1 is phase 0).
+    let cycle = &steps[..steps.len().saturating_sub(1)];
+    let end = steps.last().map_or(0.0, |s| s.tau);
+    (0..LEGS.len()).find_map(|i| {
+        let (longest, rise) = swing(cycle, i, rest[i]);
+        let share = longest as f64 / cycle.len().max(1) as f64;
+        let why = if longest == 0 {
+            format!("the {} foot never left the ground", LEGS[i])
+        } else if share < MIN_SWING {
+            format!(
+                "the {} foot was in the air for only {} of the cycle: a step takes at least {}",
+                LEGS[i],
+                fixed(share, 3),
+                fixed(MIN_SWING, 3)
+            )
+        } else if rise < MIN_LIFT {
+            format!(
+                "the {} foot swung without lifting: it rose only {} cm (a step rises at least {} cm)",
+                LEGS[i],
+                fixed(rise * 100.0, 1),
+                fixed(MIN_LIFT * 100.0, 0)
+            )
+        } else {
+            return None;
+        };
+        Some((end, why))
+    })
+}
+
+/// Leg `i`'s longest run of instants in the air (round the cycle), and
+/// the highest it rose above `rest` while in the air.
+fn swing(cycle: &[Step], i: usize, rest: f64) -> (usize, f64) {
+    let n = cycle.len();
+    let up = |k: usize| !cycle[k % n].stance[i];
+    if n == 0 || (0..n).all(up) {
+        return (n, f64::INFINITY);
+    }
+    let (mut longest, mut run, mut rise) = (0, 0, f64::NEG_INFINITY);
+    // Twice round, so a swing across phase 0 is counted whole.
+    for k in 0..2 * n {
+        run = if up(k) { run + 1 } else { 0 };
+        longest = longest.max(run.min(n));
+        if up(k) {
+            rise = rise.max(cycle[k % n].targets[i][2] - rest);
+        }
+    }
+    (longest, rise)
 }

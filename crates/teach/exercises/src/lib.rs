@@ -13,14 +13,15 @@ pub mod architecture;
 pub mod behaviours;
 pub mod control;
 pub mod fields;
+pub mod job;
 pub mod legs;
 pub mod packed;
 pub mod trace;
 
 use std::collections::BTreeMap;
 
-use kinolab_script::{ScriptError, Signature};
-use serde::Serialize;
+use kinolab_script::{ErrorKind, ScriptError, Signature};
+use serde::{Deserialize, Serialize};
 
 /// Where the learner's code goes in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -88,7 +89,7 @@ pub enum Trial {
 }
 
 /// How one world went.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Outcome {
     pub name: String,
     pub visible: bool,
@@ -151,37 +152,85 @@ pub fn find(id: &str) -> Option<Exercise> {
 }
 
 /// A learner's submission graded: every world (or only the visible ones).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Check {
     pub exercise: String,
     pub passed: bool,
+    /// Each world's outcome: every world run, or only the visible ones
+    /// once [`Check::for_learner`] has hidden the rest.
     pub worlds: Vec<Outcome>,
+    /// The held-back worlds as a learner sees them: how many passed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub held_back: Option<Tally>,
     /// The code did not compile (nothing ran), or stopped a run: the
     /// first such error.
     pub error: Option<ScriptError>,
 }
 
+/// Worlds passed, of how many.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Tally {
+    pub passed: usize,
+    pub of: usize,
+}
+
 impl Exercise {
     /// Run `source` on every world (`held_back` too, or only the visible).
+    /// Once the code has run out of time in one world, the worlds after it
+    /// are not run: they fail for the same reason.
     pub fn check(&self, source: &str, held_back: bool) -> Check {
+        self.check_knowing(source, held_back, None)
+    }
+
+    /// [`Exercise::check`], with world `i`'s outcome already known (from
+    /// its trace: the recorded run is the graded run).
+    pub fn check_knowing(
+        &self,
+        source: &str,
+        held_back: bool,
+        known: Option<(usize, Outcome)>,
+    ) -> Check {
         if let Err(e) = kinolab_script::Script::compile(source, self.signature) {
             return Check {
                 exercise: self.id.into(),
                 passed: false,
                 worlds: Vec::new(),
+                held_back: None,
                 error: Some(e),
             };
         }
+        let mut slow: Option<String> = None;
+        let mut known = known;
         let worlds: Vec<Outcome> = (self.worlds)()
             .iter()
-            .filter(|w| held_back || w.visible)
-            .map(|w| self.run(source, w))
+            .enumerate()
+            .filter(|(_, w)| held_back || w.visible)
+            .map(|(i, w)| match &slow {
+                Some(first) => Outcome::new(w).judged(Some(format!(
+                    "not run: your code ran out of time in “{first}”"
+                ))),
+                None => {
+                    let out = match known.take_if(|(k, _)| *k == i) {
+                        Some((_, out)) => out,
+                        None => self.run(source, w),
+                    };
+                    if out
+                        .error
+                        .as_ref()
+                        .is_some_and(|e| e.kind == ErrorKind::TooSlow)
+                    {
+                        slow = Some(w.name.clone());
+                    }
+                    out
+                }
+            })
             .collect();
         Check {
             exercise: self.id.into(),
             passed: worlds.iter().all(|w| w.passed),
             error: worlds.iter().find_map(|w| w.error.clone()),
             worlds,
+            held_back: None,
         }
     }
 
@@ -194,5 +243,52 @@ impl Exercise {
             Trial::Legs(t) => legs::run(source, world, t),
             Trial::Arena(t) => architecture::run(source, world, t),
         }
+    }
+}
+
+impl Check {
+    /// The check as a learner may see it: the visible worlds in full, and
+    /// of the held-back worlds only how many passed. An error that stopped
+    /// a held-back world keeps its kind, line and time, not its words
+    /// (they may quote the world: a point, a percept the code threw).
+    pub fn for_learner(mut self) -> Check {
+        let hidden: Vec<Outcome> = self.worlds.iter().filter(|w| !w.visible).cloned().collect();
+        if hidden.is_empty() {
+            return self;
+        }
+        self.worlds.retain(|w| w.visible);
+        self.held_back = Some(Tally {
+            passed: hidden.iter().filter(|w| w.passed).count(),
+            of: hidden.len(),
+        });
+        let shown = self.worlds.iter().find_map(|w| w.error.clone());
+        self.error = shown.or_else(|| hidden.iter().find_map(|w| w.error.as_ref().map(withheld)));
+        self
+    }
+}
+
+/// An error from a held-back world, told without the world's details.
+fn withheld(e: &ScriptError) -> ScriptError {
+    let what = match e.kind {
+        ErrorKind::Endless => "a call ran too long: is there a loop that never ends?",
+        ErrorKind::TooSlow => {
+            "the run took too long in all: does each call do far more work than it needs?"
+        }
+        ErrorKind::TooDeep => {
+            "functions called functions too deep: does one call itself without end?"
+        }
+        ErrorKind::TooLarge => "a string, list or map grew too large",
+        ErrorKind::Shape => "your function answered something of the wrong shape",
+        ErrorKind::NotFinite => "your function answered NaN or an infinity",
+        ErrorKind::Syntax | ErrorKind::Missing | ErrorKind::Runtime => {
+            "your code stopped with an error"
+        }
+    };
+    let t = e.t.map_or(String::new(), |t| {
+        format!(" at t = {} s", kinolab_common::display::fixed(t, 2))
+    });
+    ScriptError {
+        message: format!("in a world held back{t}, {what}"),
+        ..e.clone()
     }
 }

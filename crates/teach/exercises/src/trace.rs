@@ -7,27 +7,101 @@ use kinolab_architectures::Architecture;
 use kinolab_architectures::run::Recording as ArenaRecording;
 use kinolab_behaviours::run::{Frame, Recording};
 use kinolab_fields::Field;
-use kinolab_fields::descend::descend;
+use kinolab_fields::follow::follow;
 use kinolab_script::Output;
-use kinolab_world::World as Place;
+use kinolab_world::{Shape, World as Place};
+use serde::{Deserialize, Serialize};
 
 use crate::{Exercise, Outcome, Trial, World, architecture, behaviours};
 
-/// What the stepper draws under the ticks.
-#[derive(Debug, Clone)]
+/// What the stepper draws under the ticks. It is plain data, worked out
+/// where the code ran: a trace crosses from the thread that ran the
+/// learner's code to the page that shows it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Scene {
     /// The plane round the goal pose, at the origin facing along x.
     Plane { area: [f64; 4] },
-    /// A world, its obstacles where they are at each tick's time.
-    World(Box<Place>),
-    /// The whole field, the learner's primitive in it, over `area`.
-    Field { field: Box<Field>, area: [f64; 4] },
+    /// A world, its obstacles where they are at each tick's time (on the
+    /// wire, as its world file).
+    World(#[serde(with = "world_file")] Box<Place>),
+    /// The whole field over `area`, the learner's primitive in it: its
+    /// vector on a grid of cells (`[x, y, fx, fy]`), what the robot must
+    /// not pass through, and the goal.
+    Field {
+        area: [f64; 4],
+        arrows: Vec<[f64; 4]>,
+        obstacles: Vec<Outline>,
+        goal: Option<[f64; 2]>,
+    },
     /// The hexapod from above: its centre of mass.
     Legs { com: [f64; 2] },
 }
 
+/// An obstacle's outline, as the stepper draws it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Outline {
+    Disc {
+        centre: [f64; 2],
+        radius: f64,
+    },
+    Polygon {
+        points: Vec<[f64; 2]>,
+    },
+    Wall {
+        from: [f64; 2],
+        to: [f64; 2],
+        thickness: f64,
+    },
+}
+
+impl From<&Shape> for Outline {
+    fn from(shape: &Shape) -> Self {
+        let at = |p: &kinolab_world::Vec2| [p.x, p.y];
+        match shape {
+            Shape::Disc { centre, radius } => Outline::Disc {
+                centre: at(centre),
+                radius: *radius,
+            },
+            Shape::Polygon { points } => Outline::Polygon {
+                points: points.iter().map(at).collect(),
+            },
+            Shape::Wall {
+                from,
+                to,
+                thickness,
+            } => Outline::Wall {
+                from: at(from),
+                to: at(to),
+                thickness: *thickness,
+            },
+        }
+    }
+}
+
+/// A world written as its world file, and read back.
+mod world_file {
+    use kinolab_world::World;
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(world: &World, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&world.to_json())
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Box<World>, D::Error> {
+        let text = String::deserialize(d)?;
+        World::from_json(&text)
+            .map(Box::new)
+            .map_err(serde::de::Error::custom)
+    }
+}
+
+/// The grid of arrows a field scene shows.
+const ARROWS: (usize, usize) = (22, 14);
+
 /// One call of the learner's function.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Tick {
     /// Simulated time, s (for a walk, the phase).
     pub t: f64,
@@ -45,7 +119,7 @@ pub struct Tick {
 }
 
 /// A world run with the learner's code, recorded.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Trace {
     pub scene: Scene,
     /// Where the robot went, start to end.
@@ -78,8 +152,8 @@ impl Exercise {
             Trial::Arena(t) => {
                 let setup = architecture::setup(source, t);
                 match ArenaRecording::new(&setup, Architecture::Hybrid, architecture::EVERY) {
-                    Ok(recording) => Job::Arena(Box::new(ArenaJob::new(recording, setup))),
-                    Err(e) => unstarted(&t.setup.world, architecture::judge(world, &setup, Err(e))),
+                    Ok(recording) => Job::Arena(Box::new(ArenaJob::new(recording, t.clone()))),
+                    Err(e) => unstarted(&t.setup.world, architecture::judge(world, t, Err(e))),
                 }
             }
             // Short runs: recorded at once.
@@ -151,7 +225,10 @@ impl Tracing {
         let (now, end) = match &self.job {
             Job::Done(_) => return 1.0,
             Job::Behaviours(job) => (job.recording.runner.sim.time, job.trial.duration),
-            Job::Arena(job) => (job.recording.arena.entrants[0].sim.time, job.setup.duration),
+            Job::Arena(job) => (
+                job.recording.arena.entrants[0].sim.time,
+                job.trial.setup.duration,
+            ),
         };
         if end > 0.0 {
             (now / end).clamp(0.0, 1.0)
@@ -180,13 +257,13 @@ impl Tracing {
             Job::Arena(job) => {
                 let ArenaJob {
                     recording,
-                    setup,
+                    trial,
                     scene,
                     path,
                     ticks,
                     ..
                 } = *job;
-                let outcome = architecture::judge(&self.world, &setup, Ok(recording.finish()));
+                let outcome = architecture::judge(&self.world, &trial, Ok(recording.finish()));
                 (scene, path, ticks, outcome)
             }
         };
@@ -338,19 +415,17 @@ fn behaviours_tick(frame: Frame) -> Option<Tick> {
 fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
     let area = [-0.5, -2.5, 7.0, 2.5];
     let Ok(f) = Field::from_json(&crate::fields::field_file(source, t.base)) else {
-        let empty = Field::new("", None, Vec::new());
-        return (
-            Scene::Field {
-                field: Box::new(empty),
-                area,
-            },
-            Vec::new(),
-            Vec::new(),
-        );
+        let scene = Scene::Field {
+            area,
+            arrows: Vec::new(),
+            obstacles: Vec::new(),
+            goal: None,
+        };
+        return (scene, Vec::new(), Vec::new());
     };
-    let steps = crate::fields::STEPS;
+    let pace = crate::fields::PACE;
     let path: Vec<[f64; 2]> =
-        descend(&f, t.start.into(), steps).map_or_else(|_| Vec::new(), |d| d.path);
+        follow(&f, t.start.into(), pace).map_or_else(|_| Vec::new(), |w| w.path);
     let mut ticks = Vec::with_capacity(path.len());
     for (k, p) in path.iter().enumerate() {
         let Some(mine) = f.custom.first() else { break };
@@ -359,7 +434,7 @@ fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
             Err(e) => (format!("stopped: {}", e.message), Output::default()),
         };
         ticks.push(Tick {
-            t: k as f64 * steps.step,
+            t: k as f64 * pace.dt,
             pose: [p[0], p[1], 0.0],
             given: given(&[("x", number(p[0])), ("y", number(p[1]))]),
             returned,
@@ -368,14 +443,18 @@ fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
             feet: Vec::new(),
         });
     }
-    (
-        Scene::Field {
-            field: Box::new(f),
-            area,
-        },
-        path,
-        ticks,
-    )
+    let cells = kinolab_world::Rect::from(area);
+    let scene = Scene::Field {
+        area,
+        arrows: f
+            .arrows(&cells, ARROWS.0, ARROWS.1)
+            .into_iter()
+            .map(|(p, v)| [p.x, p.y, v.x, v.y])
+            .collect(),
+        obstacles: f.obstacles().iter().map(Outline::from).collect(),
+        goal: f.goal.map(|g| [g.x, g.y]),
+    };
+    (scene, path, ticks)
 }
 
 fn legs(source: &str, t: &crate::legs::Trial) -> Recorded {
@@ -434,7 +513,7 @@ fn legs(source: &str, t: &crate::legs::Trial) -> Recorded {
 #[derive(Debug)]
 struct ArenaJob {
     recording: ArenaRecording,
-    setup: kinolab_architectures::ArenaSetup,
+    trial: architecture::Trial,
     scene: Scene,
     path: Vec<[f64; 2]>,
     ticks: Vec<Tick>,
@@ -443,11 +522,11 @@ struct ArenaJob {
 }
 
 impl ArenaJob {
-    fn new(recording: ArenaRecording, setup: kinolab_architectures::ArenaSetup) -> Self {
+    fn new(recording: ArenaRecording, trial: architecture::Trial) -> Self {
         let e = &recording.arena.entrants[0];
         let start = e.sim.pose;
         Self {
-            setup,
+            trial,
             scene: Scene::World(Box::new(e.sim.world.clone())),
             path: vec![[start.x, start.y]],
             ticks: Vec::new(),

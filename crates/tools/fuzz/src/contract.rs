@@ -63,7 +63,7 @@ impl Verdict {
 
 /// Keys whose value may be `null` in an answer: "none" in the contract's
 /// sense (no time to goal, no ICR, no path), never a number that overflowed.
-pub const NULLABLE: [&str; 21] = [
+pub const NULLABLE: [&str; 22] = [
     "behaviour",
     // A joint without limits; a widget parameter with no default; a
     // straight drive's turn radius; a top-level group of bodies; a foot
@@ -89,6 +89,7 @@ pub const NULLABLE: [&str; 21] = [
     // cleanly no error (whose line, column and time may be unknown).
     "reason",
     "error",
+    "error_kind",
     "first_failure",
 ];
 

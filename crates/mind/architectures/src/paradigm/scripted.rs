@@ -44,15 +44,25 @@ fn point(p: Option<[f64; 2]>) -> Dynamic {
     p.map_or(Dynamic::UNIT, |p| numbers(&p))
 }
 
+/// A goal as the script is handed it: on a micrometre grid. The robot
+/// rebuilds the goal from a bearing and a distance, so it wobbles in its
+/// last bits from step to step; rounded, a goal that has not moved comes
+/// back exactly as it was, and `state.planned_for != state.goal` means
+/// "it moved".
+fn goal(p: Option<[f64; 2]>) -> Dynamic {
+    let snap = |x: f64| (x * 1e6).round() / 1e6;
+    point(p.map(|[x, y]| [snap(x), snap(y)]))
+}
+
 /// The situation as the script sees it.
 fn state(s: &Situation<'_>) -> Dynamic {
     let plan: Vec<Dynamic> = s.plan.iter().map(|w| numbers(w)).collect();
     map([
         ("t", number(s.t)),
         ("at", numbers(&[s.at.x, s.at.y])),
-        ("goal", point(s.goal.map(|g| [g.x, g.y]))),
+        ("goal", goal(s.goal.map(|g| [g.x, g.y]))),
         ("plan", Dynamic::from_array(plan)),
-        ("planned_for", point(s.planned_for)),
+        ("planned_for", goal(s.planned_for)),
         ("planning", Dynamic::from_bool(s.planning)),
         ("no_path", Dynamic::from_bool(s.no_path)),
         ("blocked", Dynamic::from_bool(s.blocked)),

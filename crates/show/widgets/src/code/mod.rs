@@ -1,33 +1,39 @@
 //! The code panel: the learner writes the function a graded exercise asks
 //! for, runs it on the worlds they can see, steps through what it saw and
 //! answered at any instant, and submits it to be graded on worlds held
-//! back. Hints unlock one by one after failed submissions. The code and
-//! the hints travel in the widget's link (the code packed), so a reload or
-//! a shared link brings them back.
+//! back (of which they learn only how many passed). Hints unlock one by
+//! one after failed submissions. The code and the hints travel in the
+//! widget's link (the code packed), so a reload or a shared link brings
+//! them back, but the code never runs until the learner presses Run: a
+//! link cannot make a reader's page run anything.
+//!
+//! The code runs off the page's thread (see [`runner`]): while it runs the
+//! panel stays responsive and the learner may stop it; a run that ends the
+//! runner is reported, and remembered with the code.
 
 mod editor;
+pub mod runner;
 mod stepper;
 
 use std::rc::Rc;
 
 use egui::RichText;
-use kinolab_exercises::trace::Tracing;
+use kinolab_exercises::job::{Job, Task};
 use kinolab_exercises::{Check, Exercise, World};
 use kinolab_script::ScriptError;
 use serde::{Deserialize, Serialize};
 
 use crate::link::{self, Moment};
-use crate::player::{FRAME_BUDGET, Player, Speed};
+use crate::player::{Player, Speed};
 use crate::theme;
 use crate::widget::{LabWidget, Params, SavedRun};
+use runner::{Ran, Runner};
 use stepper::Stepping;
 
 /// The widget's name in the schema.
 const NAME: &str = "code";
 /// The learner's script as "Save run" writes it.
 const FILE: &str = "mine.rhai";
-/// Steps of a run recorded between looks at the clock.
-const STEPS_PER_LOOK: usize = 16;
 
 /// What the lesson sets and a link carries.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -39,6 +45,10 @@ struct Settings {
     world: usize,
     /// Hints unlocked.
     hints: usize,
+    /// Why the last run ended what ran it, if it did: kept with the code,
+    /// so the lesson reopens with a notice rather than a surprise.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    ended: Option<String>,
 }
 
 struct Code {
@@ -49,33 +59,20 @@ struct Code {
     source: String,
     /// The code's syntax error, checked as it is typed.
     syntax: Option<ScriptError>,
-    /// The last Run (visible worlds) or Submit (all of them).
+    /// The last Run (visible worlds) or Submit (all of them, the held-back
+    /// ones only counted).
     results: Option<Check>,
     submitted: bool,
     player: Option<Player<Stepping>>,
-    /// The stepper still to be made for the world chosen (see [`Pending`]).
-    to_step: Option<Pending>,
-}
-
-/// A stepper on its way. Recording a world's run can take longer than a
-/// frame (a minute of an arena is thousands of calls of the learner's
-/// code), so the run is recorded a piece per frame from the first frame
-/// drawn (a widget made and then given a link records nothing twice), and
-/// the stepper opens at `moment` once it is recorded.
-struct Pending {
+    /// Where the stepper should open once a run is recorded (a link's
+    /// instant, or the one the learner was at).
     moment: Moment<()>,
     speed: Option<Speed>,
-    tracing: Option<Tracing>,
-}
-
-impl Pending {
-    fn at(moment: Moment<()>, speed: Option<Speed>) -> Self {
-        Self {
-            moment,
-            speed,
-            tracing: None,
-        }
-    }
+    runner: Box<dyn Runner>,
+    /// The job under way, if any.
+    busy: Option<Task>,
+    /// A job that was refused, or stopped.
+    problem: Option<String>,
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
@@ -91,11 +88,12 @@ impl Code {
             None => exercise.starter.to_owned(),
         };
         let worlds = (exercise.worlds)();
-        if settings.world > worlds.len() {
+        let shown = settings.world.checked_sub(1).and_then(|i| worlds.get(i));
+        if !shown.is_some_and(|w| w.visible) {
             return Err(format!(
-                "the exercise has {} worlds, not {}",
-                worlds.len(),
-                settings.world
+                "world {} is not one of the exercise's {} visible worlds",
+                settings.world,
+                worlds.iter().filter(|w| w.visible).count()
             ));
         }
         let mut code = Code {
@@ -108,7 +106,11 @@ impl Code {
             results: None,
             submitted: false,
             player: None,
-            to_step: Some(Pending::at(Moment::default(), None)),
+            moment: Moment::default(),
+            speed: None,
+            runner: runner::runner(),
+            busy: None,
+            problem: None,
         };
         code.edited();
         Ok(code)
@@ -121,92 +123,119 @@ impl Code {
         self.syntax = kinolab_script::Script::compile(&self.source, self.exercise.signature).err();
     }
 
-    /// Run on the worlds shown, and step through the chosen one.
-    fn run(&mut self) {
-        self.results = Some(self.exercise.check(&self.source, false));
-        self.submitted = false;
-        let world = self.settings.world - 1;
-        let shown = if self.worlds[world].visible { world } else { 0 };
-        self.step_through(shown);
+    /// Hand `task` to the runner; the answer arrives in a later frame.
+    fn start(&mut self, task: Task) {
+        if let Some(player) = self.player.take() {
+            self.speed = Some(player.speed);
+        }
+        self.problem = None;
+        self.runner.start(Job {
+            exercise: self.exercise.id.into(),
+            source: self.source.clone(),
+            task,
+        });
+        self.busy = Some(task);
     }
 
-    /// Grade on every world; a failure unlocks the next hint.
+    /// Run on the worlds shown, and step through the chosen one.
+    fn run(&mut self) {
+        self.submitted = false;
+        self.start(Task::Run {
+            world: self.settings.world - 1,
+        });
+    }
+
+    /// Grade on every world.
     fn submit(&mut self) {
-        let check = self.exercise.check(&self.source, true);
-        if !check.passed {
-            self.settings.hints = (self.settings.hints + 1).min(self.exercise.hints.len());
-        }
-        let failing = check.worlds.iter().position(|w| !w.passed);
-        self.results = Some(check);
         self.submitted = true;
-        if let Some(i) = failing {
-            self.step_through(i);
+        self.start(Task::Submit);
+    }
+
+    /// Record visible world `i` and show it in the stepper.
+    fn step_through(&mut self, i: usize) {
+        if self.worlds.get(i).is_some_and(|w| w.visible) {
+            self.settings.world = i + 1;
+            self.moment = Moment::default();
+            self.start(Task::Trace { world: i });
         }
     }
 
     /// Back to the starter code.
     fn reset(&mut self) {
+        self.stop();
         self.source = self.exercise.starter.to_owned();
         self.results = None;
+        self.player = None;
+        self.settings.ended = None;
         self.edited();
-        self.step_through(0);
     }
 
-    /// Record more of the stepper's run, for at most `budget` of wall
-    /// time; open the stepper once the run is recorded.
-    fn record(&mut self, budget: std::time::Duration) {
-        let Some(pending) = &mut self.to_step else {
+    /// Stop the job under way.
+    fn stop(&mut self) {
+        if self.busy.take().is_some() {
+            self.runner.stop();
+            self.problem = Some("Stopped. Your code is as you left it.".into());
+        }
+    }
+
+    /// Take the runner's answer, if it has one.
+    fn collect(&mut self) {
+        let Some(task) = self.busy else { return };
+        let Some(ran) = self.runner.poll() else {
             return;
         };
-        let started = web_time::Instant::now();
-        let world = &self.worlds[self.settings.world - 1];
-        let tracing = pending
-            .tracing
-            .get_or_insert_with(|| self.exercise.tracing(&self.source, world));
-        while !tracing.advance(STEPS_PER_LOOK) {
-            if started.elapsed() > budget {
-                return;
+        self.busy = None;
+        match ran {
+            Ran::Answered(answer) => {
+                self.settings.ended = None;
+                if let Some(check) = answer.check {
+                    if task == Task::Submit && !check.passed {
+                        let more = self.settings.hints + 1;
+                        self.settings.hints = more.min(self.exercise.hints.len());
+                    }
+                    self.results = Some(check);
+                }
+                if let Some((world, trace)) = answer.trace {
+                    self.settings.world = world + 1;
+                    self.open(trace);
+                }
+            }
+            Ran::Refused(why) => self.problem = Some(format!("The run was refused: {why}.")),
+            Ran::Crashed(why) => {
+                self.problem = Some(format!(
+                    "Your code stopped what runs it: {why}. The page is fine and your code is kept; the next Run starts afresh."
+                ));
+                self.settings.ended = Some(note(&why));
             }
         }
-        let Some(Pending {
-            moment,
-            speed,
-            tracing: Some(tracing),
-        }) = self.to_step.take()
-        else {
-            return;
-        };
-        let mut player = Player::new(Stepping::new(Rc::new(tracing.finish())));
-        if let Some(speed) = speed {
+    }
+
+    /// Open the stepper on `trace`, at the moment kept for it.
+    fn open(&mut self, trace: kinolab_exercises::trace::Trace) {
+        let mut player = Player::new(Stepping::new(Rc::new(trace)));
+        if let Some(speed) = self.speed {
             player.speed = speed;
         }
+        let moment = std::mem::take(&mut self.moment);
         player.replay(&moment.events, moment.instant);
         self.player = Some(player);
     }
 
-    /// Record world `i` with the current code and show it in the stepper
-    /// (from the next frames on, see [`Pending`]).
-    fn step_through(&mut self, i: usize) {
-        if i >= self.worlds.len() {
-            return;
-        }
-        self.settings.world = i + 1;
-        let speed = self.player.take().map(|p| p.speed);
-        self.to_step = Some(Pending::at(Moment::default(), speed));
-    }
-
-    /// The stepper while its run is still being recorded.
-    fn recording_ui(&self, ui: &mut egui::Ui) {
-        let Some(pending) = &self.to_step else {
-            return;
+    /// While a job runs: what it is, a spinner, and the way to stop it.
+    fn busy_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(task) = self.busy else { return };
+        let doing = match task {
+            Task::Run { .. } => "Running your code on the worlds shown…",
+            Task::Submit => "Grading your code on every world…",
+            Task::Trace { .. } => "Recording the run…",
         };
-        let done = pending.tracing.as_ref().map_or(0.0, Tracing::progress);
         ui.horizontal(|ui| {
             ui.spinner();
-            ui.label(format!("Recording the run: {:.0} %", done * 100.0));
-            ui.add(egui::ProgressBar::new(done as f32).desired_width(240.0));
+            ui.label(doing);
         });
-        crate::widget::animate(ui);
+        // Look for the answer again soon; nothing moves once it is in.
+        ui.ctx()
+            .request_repaint_after(std::time::Duration::from_millis(50));
     }
 
     fn header(&self, ui: &mut egui::Ui) {
@@ -227,7 +256,7 @@ impl Code {
 
     fn buttons(&mut self, ui: &mut egui::Ui) {
         crate::widget::control_row(ui, |ui| {
-            let runnable = self.syntax.is_none();
+            let runnable = self.syntax.is_none() && self.busy.is_none();
             if ui
                 .add_enabled(runnable, egui::Button::new("Run"))
                 .on_hover_text("Run your code on the worlds shown, and step through it")
@@ -243,6 +272,13 @@ impl Code {
                 self.submit();
             }
             if ui
+                .add_enabled(self.busy.is_some(), egui::Button::new("Stop"))
+                .on_hover_text("Stop the run under way")
+                .clicked()
+            {
+                self.stop();
+            }
+            if ui
                 .button("Reset")
                 .on_hover_text("Start again from the starter code")
                 .clicked()
@@ -252,7 +288,22 @@ impl Code {
         });
     }
 
-    /// Each world's verdict, with a button to step through it.
+    /// A notice kept from the last run, and a job refused or stopped.
+    fn notices(&self, ui: &mut egui::Ui) {
+        let bad = theme::error_color(ui);
+        if let (Some(why), None) = (&self.settings.ended, &self.problem) {
+            let text = format!(
+                "Your last run did not finish: {why}. Your code is as you left it; look at what it does before you run it again."
+            );
+            crate::widget::message_ui(ui, &text, bad);
+        }
+        if let Some(problem) = &self.problem {
+            crate::widget::message_ui(ui, problem, bad);
+        }
+    }
+
+    /// Each visible world's verdict, with a button to step through it, and
+    /// after a submission how many held-back worlds passed.
     fn results(&mut self, ui: &mut egui::Ui) {
         let Some(check) = &self.results else {
             let visible = self.worlds.iter().filter(|w| w.visible).count();
@@ -270,7 +321,7 @@ impl Code {
         };
         ui.label(RichText::new(verdict.0).color(verdict.1).strong());
         let mut open = None;
-        for w in &check.worlds {
+        for w in check.worlds.iter().filter(|w| w.visible) {
             ui.horizontal_wrapped(|ui| {
                 let (mark, color) = if w.passed {
                     ("passed", good)
@@ -278,15 +329,28 @@ impl Code {
                     ("failed", bad)
                 };
                 ui.label(RichText::new(mark).color(color));
-                let held = if w.visible { "" } else { " (held back)" };
-                ui.label(format!("{}{held}", w.name));
+                ui.label(&w.name);
                 if let Some(reason) = &w.reason {
                     ui.label(RichText::new(reason).color(bad));
                 }
-                if ui.small_button("Step through").clicked() {
+                let idle = self.busy.is_none();
+                if ui
+                    .add_enabled(idle, egui::Button::new("Step through").small())
+                    .clicked()
+                {
                     open = self.worlds.iter().position(|x| x.name == w.name);
                 }
             });
+        }
+        if let Some(tally) = check.held_back {
+            let color = if tally.passed == tally.of { good } else { bad };
+            ui.label(
+                RichText::new(format!(
+                    "Held back: {} of {} passed.",
+                    tally.passed, tally.of
+                ))
+                .color(color),
+            );
         }
         if let Some(i) = open {
             self.step_through(i);
@@ -330,6 +394,7 @@ impl Code {
     fn description(&self) -> String {
         let title = self.exercise.title;
         let verdict = match (&self.syntax, &self.results) {
+            _ if self.busy.is_some() => "Your code is running.".to_owned(),
             (Some(e), _) => format!("Your code does not compile: {}.", editor::error_line(e)),
             (None, None) => "Your code has not been run yet.".to_owned(),
             (None, Some(check)) => check_text(check, self.submitted),
@@ -356,27 +421,43 @@ impl Code {
     }
 }
 
-/// How a check went: passed, or the first world that failed and why.
+/// `why` as a note a link can carry: one line of at most 200 characters.
+fn note(why: &str) -> String {
+    why.chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .take(200)
+        .collect()
+}
+
+/// How a check went: passed, or the first world that failed and why, and
+/// how many held-back worlds passed.
 fn check_text(check: &Check, submitted: bool) -> String {
+    let tally = check.held_back.map_or(String::new(), |t| {
+        format!(" Held back: {} of {} passed.", t.passed, t.of)
+    });
     if check.passed {
-        return if submitted {
-            "Passed on every world, those held back too.".to_owned()
+        let all = if submitted {
+            "Passed on every world, those held back too."
         } else {
-            "Passed on the worlds shown.".to_owned()
+            "Passed on the worlds shown."
         };
+        return format!("{all}{tally}");
     }
     if let Some(e) = &check.error {
-        return format!("It stopped with an error: {}.", editor::error_line(e));
+        return format!(
+            "It stopped with an error: {}.{tally}",
+            editor::error_line(e)
+        );
     }
     match check.worlds.iter().find(|w| !w.passed) {
         Some(w) => format!(
-            "Not yet: it failed on {}{}.",
+            "Not yet: it failed on {}{}.{tally}",
             w.name,
             w.reason
                 .as_deref()
                 .map_or(String::new(), |r| format!(" ({r})"))
         ),
-        None => "Not yet.".to_owned(),
+        None => format!("Not yet.{tally}"),
     }
 }
 
@@ -386,30 +467,36 @@ impl LabWidget for Code {
     }
 
     fn ui(&mut self, ui: &mut egui::Ui) {
-        self.record(FRAME_BUDGET);
+        self.collect();
         self.header(ui);
         ui.add_space(4.0);
         if editor::editor(ui, &mut self.source, self.syntax.as_ref()) {
             self.edited();
         }
         self.buttons(ui);
+        self.busy_ui(ui);
+        self.notices(ui);
         self.results(ui);
         self.hints(ui);
         ui.separator();
         let name = self.worlds[self.settings.world - 1].name.clone();
         ui.label(RichText::new(format!("Stepping through: {name}")).strong());
-        if let Some(player) = &mut self.player {
-            stepper::show(ui, player);
+        match &mut self.player {
+            Some(player) => stepper::show(ui, player),
+            None if self.busy.is_none() => {
+                ui.label(
+                    RichText::new("Press Run to try your code and step through it here.").weak(),
+                );
+            }
+            None => {}
         }
-        self.recording_ui(ui);
         self.exports(ui);
     }
 
     fn state(&self) -> Option<String> {
-        let moment = match (&self.player, &self.to_step) {
-            (_, Some(pending)) => pending.moment.clone(),
-            (Some(player), None) => player.moment(),
-            (None, None) => Moment::default(),
+        let moment = match &self.player {
+            Some(player) => player.moment(),
+            None => self.moment.clone(),
         };
         link::write(NAME, &self.settings, &self.initial, &moment)
     }
@@ -418,20 +505,19 @@ impl LabWidget for Code {
         let (settings, moment): (Settings, Moment<()>) = link::read(NAME, state)?;
         let mut restored = Code::new(settings)?;
         restored.initial = self.initial.clone();
-        restored.to_step = Some(Pending::at(moment, None));
+        restored.moment = moment;
         *self = restored;
         Ok(())
     }
 
     fn seek(&mut self, t: f64) {
-        self.record(std::time::Duration::MAX);
         if let Some(p) = &mut self.player {
             p.seek_time(t);
         }
     }
 
     fn saved_run(&mut self) -> Option<SavedRun> {
-        let check = self.exercise.check(&self.source, true);
+        let check = self.exercise.check(&self.source, true).for_learner();
         let worlds = kinolab_common::display::tidy_report(&check.worlds).ok()?;
         let shows = vec![
             ("/passed".to_owned(), serde_json::Value::Bool(check.passed)),
@@ -457,44 +543,118 @@ mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
 
-    #[test]
-    fn a_long_run_is_recorded_over_frames_and_opens_at_the_links_instant() {
-        let mut code = Code::new(Settings {
-            exercise: "sequencer-replan".into(),
-            code: None,
-            world: 2,
+    fn panel(exercise: &str, code: Option<&str>, world: usize) -> Code {
+        Code::new(Settings {
+            exercise: exercise.into(),
+            code: code.map(kinolab_exercises::packed::pack),
+            world,
             hints: 0,
+            ended: None,
         })
-        .unwrap();
-        let moment = Moment {
+        .unwrap()
+    }
+
+    #[test]
+    fn code_from_a_link_never_runs_until_run_is_pressed() {
+        // A script that would never stop, carried in a link.
+        let endless = "fn control(rho, alpha, beta) { loop { } }";
+        let mut code = panel("control-park", Some(endless), 1);
+        code.initial = panel("control-park", None, 1).settings;
+        let state = code.state().unwrap();
+        code.restore(&state).unwrap();
+        assert!(code.busy.is_none() && code.results.is_none() && code.player.is_none());
+        assert_eq!(code.source, endless);
+        // Run: the sandbox stops it, with the line.
+        code.run();
+        code.collect();
+        let check = code.results.as_ref().unwrap();
+        assert!(!check.passed);
+        assert_eq!(check.error.as_ref().unwrap().line, Some(1));
+    }
+
+    #[test]
+    fn a_run_opens_the_stepper_at_the_links_instant() {
+        let mut code = panel("sequencer-replan", None, 2);
+        code.moment = Moment {
             instant: 12.0,
             events: Vec::new(),
         };
-        code.to_step = Some(Pending::at(moment.clone(), Some(Speed::Four)));
-        let mut frames = 0;
-        let mut progress = 0.0;
-        while code.player.is_none() {
-            // The least a frame does: a few steps of the run.
-            code.record(std::time::Duration::ZERO);
-            frames += 1;
-            assert!(frames < 100_000, "the recording never ends");
-            if let Some(Pending {
-                tracing: Some(t), ..
-            }) = &code.to_step
-            {
-                assert!(t.progress() >= progress);
-                progress = t.progress();
-            }
-            assert!(
-                code.state().is_some(),
-                "the link keeps its instant meanwhile"
-            );
-        }
-        assert!(frames > 20, "a minute of an arena took {frames} frames");
+        code.speed = Some(Speed::Four);
+        code.run();
+        code.collect();
         let at_once = code.exercise.trace(&code.source, &code.worlds[1]);
         let player = code.player.as_mut().unwrap();
         assert_eq!(player.speed, Speed::Four);
         assert!((player.time() - 12.0).abs() < 0.1, "{}", player.time());
         assert_eq!(player.state().trace().ticks, at_once.ticks);
+    }
+
+    #[test]
+    fn a_submission_counts_the_held_back_worlds_and_never_shows_them() {
+        let mut code = panel("field-pull", None, 1);
+        code.submit();
+        code.collect();
+        let check = code.results.as_ref().unwrap();
+        assert!(check.worlds.iter().all(|w| w.visible));
+        assert_eq!(check.held_back.unwrap().of, 3);
+        assert_eq!(code.settings.hints, 1, "a failed submission unlocks a hint");
+        // A held-back world cannot be stepped through.
+        let held = code.worlds.iter().position(|w| !w.visible).unwrap();
+        code.step_through(held);
+        assert!(code.busy.is_none());
+        assert!(
+            Code::new(Settings {
+                world: held + 1,
+                ..code.settings.clone()
+            })
+            .is_err()
+        );
+    }
+
+    /// A runner that crashes whatever it is given.
+    struct Crashing;
+
+    impl Runner for Crashing {
+        fn start(&mut self, _: Job) {}
+        fn poll(&mut self) -> Option<Ran> {
+            Some(Ran::Crashed(
+                "RangeError: Maximum call stack size exceeded".into(),
+            ))
+        }
+        fn stop(&mut self) {}
+    }
+
+    #[test]
+    fn a_run_that_ends_its_runner_is_remembered_with_the_code() {
+        let mut code = panel(
+            "control-park",
+            Some("fn control(rho, alpha, beta) { [0.0, 0.0] }"),
+            1,
+        );
+        code.runner = Box::new(Crashing);
+        code.run();
+        code.collect();
+        assert!(code.busy.is_none());
+        assert!(
+            code.problem
+                .as_ref()
+                .unwrap()
+                .contains("Maximum call stack")
+        );
+        // The link and the progress keep it: the lesson reopens with a
+        // notice and the code, and nothing runs.
+        let state = code.state().unwrap();
+        let mut reopened = panel("control-park", None, 1);
+        reopened.restore(&state).unwrap();
+        assert!(
+            reopened
+                .settings
+                .ended
+                .as_ref()
+                .unwrap()
+                .contains("Maximum call stack")
+        );
+        assert_eq!(reopened.source, code.source);
+        assert!(reopened.busy.is_none() && reopened.results.is_none());
     }
 }

@@ -7,7 +7,7 @@ use std::rc::Rc;
 
 use egui::{Color32, RichText, Stroke, vec2};
 use egui_plot::{Plot, PlotPoints};
-use kinolab_exercises::trace::{Scene, Tick, Trace};
+use kinolab_exercises::trace::{Outline, Scene, Tick, Trace};
 use kinolab_world::Pose;
 
 use crate::behaviour::world_view::{draw_robot, draw_trail, draw_world};
@@ -150,13 +150,20 @@ fn scene(ui: &mut egui::Ui, state: &Stepping, width: f32) {
             );
         }
         Scene::World(w) => draw_world(ui, &painter, &view, w, time),
-        Scene::Field { field, area } => {
-            let cells = kinolab_world::Rect::from(*area);
-            for (p, f) in field.arrows(&cells, 22, 14) {
-                let n = f.norm();
+        Scene::Field {
+            arrows,
+            obstacles,
+            goal,
+            ..
+        } => {
+            for outline in obstacles {
+                draw_outline(&painter, &view, outline, ui.visuals().text_color());
+            }
+            for [x, y, fx, fy] in arrows {
+                let n = fx.hypot(*fy);
                 if n > 1e-9 && n.is_finite() {
-                    let along = vec2((f.x / n) as f32, -(f.y / n) as f32) * 9.0;
-                    let at = view.to_screen([p.x, p.y]) - along / 2.0;
+                    let along = vec2((fx / n) as f32, -(fy / n) as f32) * 9.0;
+                    let at = view.to_screen([*x, *y]) - along / 2.0;
                     arrow(
                         &painter,
                         at,
@@ -166,10 +173,10 @@ fn scene(ui: &mut egui::Ui, state: &Stepping, width: f32) {
                     );
                 }
             }
-            if let Some(g) = field.goal {
+            if let Some(g) = goal {
                 star(
                     &painter,
-                    view.to_screen([g.x, g.y]),
+                    view.to_screen(*g),
                     9.0,
                     theme::good_color(ui),
                     Stroke::new(1.0, ink),
@@ -337,4 +344,33 @@ fn plots(ui: &mut egui::Ui, state: &Stepping) {
             series_lines(plot, lines, Some(now));
         });
     series_legend(ui, &names, &[("now", REFERENCE)]);
+}
+
+/// An obstacle the field's robot must not pass through, outlined.
+fn draw_outline(painter: &egui::Painter, view: &PlaneView, outline: &Outline, ink: Color32) {
+    let stroke = Stroke::new(1.5, ink.gamma_multiply(0.7));
+    match outline {
+        Outline::Disc { centre, radius } => {
+            let r = view.length(*radius).max(1.0);
+            painter.circle_stroke(view.to_screen(*centre), r, stroke);
+        }
+        Outline::Polygon { points } => {
+            let mut pts: Vec<egui::Pos2> = points.iter().map(|p| view.to_screen(*p)).collect();
+            if let Some(first) = pts.first().copied() {
+                pts.push(first);
+            }
+            painter.add(egui::Shape::line(pts, stroke));
+        }
+        Outline::Wall {
+            from,
+            to,
+            thickness,
+        } => {
+            let width = view.length(*thickness).max(stroke.width);
+            painter.line_segment(
+                [view.to_screen(*from), view.to_screen(*to)],
+                Stroke::new(width, stroke.color),
+            );
+        }
+    }
 }

@@ -8,6 +8,19 @@ fn check_code(text: &str) -> Result<(), String> {
     kinolab_exercises::packed::unpack(text).map(|_| ())
 }
 
+/// The longest note kept of a run that did not finish.
+const MAX_NOTE: usize = 200;
+
+fn check_note(text: &str) -> Result<(), String> {
+    if text.chars().count() > MAX_NOTE {
+        return Err(format!("at most {MAX_NOTE} characters"));
+    }
+    if text.chars().any(char::is_control) {
+        return Err("one line of text, please".into());
+    }
+    Ok(())
+}
+
 pub(crate) static WIDGETS: &[WidgetSchema] = &[WidgetSchema {
     name: "code",
     summary: "write the robot's code for a graded exercise, run it on the worlds shown, step through what your function saw and answered, and submit",
@@ -40,6 +53,15 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[WidgetSchema {
             Kind::Integer { min: 0, max: 10 },
             Some("0"),
             "hints unlocked by failed submissions",
+        ),
+        param(
+            "ended",
+            Kind::Text {
+                example: "the run took far too long and was ended",
+                check: check_note,
+            },
+            None,
+            "why the last run did not finish, when it ended what ran it: the lesson reopens with this notice",
         ),
     ],
     rules: None,
