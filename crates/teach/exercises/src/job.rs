@@ -24,8 +24,9 @@ pub enum Task {
     /// (counting from 0) for the stepper.
     Run { world: usize },
     /// Grade on every world, as a learner sees it (the held-back worlds
-    /// only counted), and record the first visible world that failed.
-    Submit,
+    /// only counted), and record the first visible world that failed, or
+    /// visible world `world` when none did.
+    Submit { world: usize },
     /// Record visible world `world` for the stepper.
     Trace { world: usize },
 }
@@ -53,7 +54,7 @@ pub fn answer(job: &Job) -> Result<Answer, String> {
                 trace: Some((i, trace)),
             }
         }
-        Task::Submit => {
+        Task::Submit { world } => {
             let check = exercise.check(source, true).for_learner();
             let failed = check
                 .worlds
@@ -61,13 +62,12 @@ pub fn answer(job: &Job) -> Result<Answer, String> {
                 .find(|w| !w.passed)
                 .map(|w| w.name.clone());
             let worlds = (exercise.worlds)();
-            let trace = match failed.and_then(|name| worlds.iter().position(|w| w.name == name)) {
-                Some(i) => Some(traced(&exercise, source, i)?),
-                None => None,
-            };
+            let shown = failed
+                .and_then(|name| worlds.iter().position(|w| w.name == name))
+                .unwrap_or(world);
             Answer {
                 check: Some(check),
-                trace,
+                trace: Some(traced(&exercise, source, shown)?),
             }
         }
         Task::Trace { world } => Answer {
@@ -179,7 +179,7 @@ mod tests {
 
     #[test]
     fn a_submission_shows_only_how_many_held_back_worlds_passed() {
-        let a = answer(&job(Task::Submit)).unwrap();
+        let a = answer(&job(Task::Submit { world: 1 })).unwrap();
         let check = a.check.unwrap();
         assert!(check.worlds.iter().all(|w| w.visible));
         assert_eq!(check.held_back.map(|t| t.of), Some(3));

@@ -148,7 +148,9 @@ impl Code {
     /// Grade on every world.
     fn submit(&mut self) {
         self.submitted = true;
-        self.start(Task::Submit);
+        self.start(Task::Submit {
+            world: self.settings.world - 1,
+        });
     }
 
     /// Record visible world `i` and show it in the stepper.
@@ -189,7 +191,7 @@ impl Code {
             Ran::Answered(answer) => {
                 self.settings.ended = None;
                 if let Some(check) = answer.check {
-                    if task == Task::Submit && !check.passed {
+                    if matches!(task, Task::Submit { .. }) && !check.passed {
                         let more = self.settings.hints + 1;
                         self.settings.hints = more.min(self.exercise.hints.len());
                     }
@@ -226,7 +228,7 @@ impl Code {
         let Some(task) = self.busy else { return };
         let doing = match task {
             Task::Run { .. } => "Running your code on the worlds shown…",
-            Task::Submit => "Grading your code on every world…",
+            Task::Submit { .. } => "Grading your code on every world…",
             Task::Trace { .. } => "Recording the run…",
         };
         ui.horizontal(|ui| {
