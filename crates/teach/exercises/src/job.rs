@@ -141,7 +141,7 @@ mod tests {
     fn an_answer_crosses_as_json_and_comes_back_the_same() {
         for task in [
             Task::Run { world: 1 },
-            Task::Submit,
+            Task::Submit { world: 1 },
             Task::Trace { world: 0 },
         ] {
             let direct = answer(&job(task)).unwrap();
