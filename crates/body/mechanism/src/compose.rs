@@ -129,6 +129,7 @@ impl ModelBuilder {
         let mut map = vec![on; sub.bodies.len()];
         for (i, b) in sub.bodies.iter().enumerate().skip(1) {
             map[i] = self.body(name(&b.name));
+            self.bodies[map[i]].inertial = b.inertial;
         }
         let base_of = |body: usize, pose: Pose| if body == 0 { at * pose } else { pose };
         for j in &sub.joints {

@@ -97,6 +97,21 @@ struct JointFile {
     offset: Option<f64>,
     limits_deg: Option<[f64; 2]>,
     limits: Option<[f64; 2]>,
+    /// The mass of the body the joint moves, in that body's frame.
+    inertial: Option<InertialFile>,
+}
+
+/// A body's mass, its centre of mass (m) and its inertia tensor about the
+/// centre of mass in the body's axes (kg·m², `[ixx, ixy, ixz, iyy, iyz,
+/// izz]`, as URDF writes it).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct InertialFile {
+    mass: f64,
+    #[serde(default)]
+    com: [f64; 3],
+    #[serde(default)]
+    inertia: [f64; 6],
 }
 
 /// A named frame on a body: a port where tools or other mechanisms attach.
@@ -276,6 +291,13 @@ pub fn from_json_with(
         }
         Description::Transforms | Description::ZeroPosition => tree(&file, base)?,
     };
+    for (i, j) in file.joints.iter().enumerate() {
+        let Some(m) = &j.inertial else { continue };
+        let name = j.child.as_deref().unwrap_or(&j.name);
+        let body = body_index(&b, name, &format!("joints[{i}].inertial"))?;
+        let place = format!("joints[{i}].inertial (body `{name}`)");
+        b.bodies[body].inertial = Some(crate::Inertial::new(&place, m.mass, m.com, m.inertia)?);
+    }
     for (i, f) in file.frames.iter().enumerate() {
         let field = format!("frames[{i}]");
         let body = body_index(&b, &f.body, &format!("{field}.body"))?;
@@ -555,6 +577,13 @@ pub fn to_json(model: &Model) -> String {
                 } else {
                     v["limits_deg"] = json!([lo.to_degrees(), hi.to_degrees()]);
                 }
+            }
+            if let Some(i) = model.bodies().get(j.child).and_then(|b| b.inertial) {
+                v["inertial"] = json!({
+                    "mass": i.mass,
+                    "com": [i.com.x, i.com.y, i.com.z],
+                    "inertia": i.entries(),
+                });
             }
             v
         })

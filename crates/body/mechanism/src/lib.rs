@@ -22,10 +22,12 @@
 pub mod catalogue;
 mod compose;
 pub mod dh;
+pub mod dynamics;
 mod error;
 pub mod exercise;
 pub mod file;
 mod ik;
+mod inertial;
 mod kinematics;
 mod model;
 pub mod report;
@@ -35,8 +37,10 @@ mod steps;
 pub mod urdf;
 
 pub use compose::{Closure, Coupling, Group, LoopClosure};
+pub use dynamics::Dynamics;
 pub use error::FieldError;
 pub use ik::{Goal, Options, Solution, Target};
+pub use inertial::Inertial;
 pub use kinematics::{Placement, Workspace};
 pub use model::{
     Body, Frame, FrameRef, Joint, JointKind, MAX_JOINTS, Model, ModelBuilder, Pose, WORLD,

@@ -91,6 +91,8 @@ impl Joint {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Body {
     pub name: String,
+    /// Its mass properties; `None`: massless (a frame, a tool point).
+    pub inertial: Option<crate::Inertial>,
 }
 
 /// A named frame fixed to a body (a port: where a tool, sensor or other
@@ -133,6 +135,14 @@ pub struct Model {
     pub(crate) groups: Vec<Group>,
     /// Specialised solvers asked before the generic one.
     pub(crate) commands: crate::special::Commands,
+    /// Each body's joint from its parent (none for the world).
+    pub(crate) parent_joint: Vec<Option<usize>>,
+    /// Each body's mass as the dynamics use it (zero when massless).
+    pub(crate) rigid: Vec<crate::inertial::Rigid>,
+    /// The variables a user sets, in the order they are given: every
+    /// variable but the followers, in the model's order, unless the file
+    /// the model came from lists them otherwise (a URDF file's order).
+    pub(crate) driven: Vec<usize>,
 }
 
 /// The most joints a model may have, mounted ones included: more than any
@@ -175,14 +185,27 @@ impl ModelBuilder {
     pub fn new(name: impl Into<String>) -> Self {
         Self {
             name: name.into(),
-            bodies: vec![Body { name: WORLD.into() }],
+            bodies: vec![Body {
+                name: WORLD.into(),
+                inertial: None,
+            }],
             ..Self::default()
+        }
+    }
+
+    /// Give body `body` its mass properties.
+    pub fn set_inertial(&mut self, body: usize, inertial: crate::Inertial) {
+        if let Some(b) = self.bodies.get_mut(body) {
+            b.inertial = Some(inertial);
         }
     }
 
     /// Add a body; returns its index.
     pub fn body(&mut self, name: impl Into<String>) -> usize {
-        self.bodies.push(Body { name: name.into() });
+        self.bodies.push(Body {
+            name: name.into(),
+            inertial: None,
+        });
         self.bodies.len() - 1
     }
 
@@ -264,6 +287,15 @@ impl ModelBuilder {
             parent_joint[j.child] = Some(i);
         }
         let steps = crate::steps::prepare(&joints, &parent_joint);
+        let rigid = self
+            .bodies
+            .iter()
+            .map(|b| {
+                b.inertial.map_or(crate::inertial::Rigid::ZERO, |i| {
+                    crate::inertial::Rigid::of(&i)
+                })
+            })
+            .collect();
         let mut model = Model {
             name: self.name,
             bodies: self.bodies,
@@ -280,9 +312,15 @@ impl ModelBuilder {
             ignored: self.ignored,
             groups: self.groups,
             commands: Default::default(),
+            parent_joint,
+            rigid,
+            driven: Vec::new(),
         };
         model.couplings = crate::compose::resolve_couplings(&model, &self.couplings)?;
         model.loops = crate::compose::resolve_loops(&model, &self.loops)?;
+        model.driven = (0..model.dof())
+            .filter(|v| model.couplings.iter().all(|c| c.follower != *v))
+            .collect();
         Ok(model)
     }
 

@@ -34,6 +34,7 @@ pub mod behaviours;
 pub mod components;
 pub mod control;
 pub mod fields;
+pub mod forces;
 pub mod legs;
 pub mod mechanism;
 pub mod plans;
@@ -101,6 +102,8 @@ pub const OPERATIONS: &[Names] = &[
     names("place", "Mechanism.place"),
     names("jacobian", "Mechanism.jacobian"),
     names("collide", "Mechanism.collide"),
+    names("dynamics", "Mechanism.dynamics"),
+    names("statics", "Mechanism.statics"),
     names("field --at", "fieldVectors"),
     names("field --minima", "fieldMinima"),
     names("field --descend", "fieldDescend"),

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Subcommand;
 use kinolab_api::mechanism::{self, Ik, ObstacleSpec, On, Query};
-use kinolab_api::robot;
+use kinolab_api::{forces, robot};
 use serde_json::Value;
 
 use crate::args::{fixed, numbers};
@@ -86,6 +86,40 @@ pub(crate) enum Command {
         #[arg(long)]
         frame: Option<String>,
     },
+    /// Inverse dynamics (the torques for accelerations --qdd, with g(q) and M(q)), or forward dynamics (the accelerations torques --tau produce).
+    Dynamics {
+        #[command(flatten)]
+        at: Posed,
+        /// Joint velocities (default zeros): QD1,...,QDN
+        #[arg(long, value_name = "QD1,...,QDN", allow_hyphen_values = true)]
+        qd: Option<String>,
+        /// Joint accelerations: QDD1,...,QDDN
+        #[arg(
+            long,
+            value_name = "QDD1,...,QDDN",
+            allow_hyphen_values = true,
+            required_unless_present = "tau",
+            conflicts_with = "tau"
+        )]
+        qdd: Option<String>,
+        /// Joint torques and forces: T1,...,TN
+        #[arg(long, value_name = "T1,...,TN", allow_hyphen_values = true)]
+        tau: Option<String>,
+    },
+    /// The torques that hold the robot still against gravity and loads; with --stiffness, each joint's give and how far the frame sags.
+    Statics {
+        #[command(flatten)]
+        at: Posed,
+        /// A force (and moment) the world applies at a frame's origin, root-frame axes, repeatable: FRAME:FX,FY,FZ[,MX,MY,MZ]
+        #[arg(long, allow_hyphen_values = true)]
+        load: Vec<String>,
+        /// Joint stiffness, N·m/rad or N/m: one value for all, or NAME=K,...
+        #[arg(long, allow_hyphen_values = true)]
+        stiffness: Option<String>,
+        /// The frame whose sag is reported (default: as `fk`).
+        #[arg(long)]
+        frame: Option<String>,
+    },
     /// Colliding body pairs and the clearance in a view plane, among the bodies and against obstacles.
     Collide {
         /// A model file (`*.model.json`), or `catalogue:<id>`.
@@ -99,6 +133,37 @@ pub(crate) enum Command {
         #[arg(long, allow_hyphen_values = true)]
         obstacle: Vec<String>,
     },
+}
+
+/// What moves the robot or holds it still, and which joints are set.
+#[derive(Debug, clap::Args)]
+pub(crate) struct Posed {
+    /// A URDF file (`*.urdf`), a model file (`*.model.json`), or `catalogue:<id>`.
+    model: PathBuf,
+    #[command(flatten)]
+    q: Joints,
+    /// Some joints by name, the rest at zero: NAME=VALUE,...
+    #[arg(long, value_name = "NAME=VALUE,...", allow_hyphen_values = true)]
+    set: Option<String>,
+    /// Gravity in the root frame, m/s² (default 0,0,-9.81).
+    #[arg(long, value_name = "GX,GY,GZ", allow_hyphen_values = true)]
+    gravity: Option<String>,
+}
+
+impl Posed {
+    fn joints(&self) -> Result<forces::Joints, Failure> {
+        Ok(match &self.set {
+            Some(set) => forces::Joints::Named(named_values(set)?),
+            None => forces::Joints::All(self.q.values()?),
+        })
+    }
+
+    fn gravity(&self) -> Result<Option<[f64; 3]>, Failure> {
+        self.gravity
+            .as_deref()
+            .map(|g| fixed("gravity", "GX,GY,GZ", g))
+            .transpose()
+    }
 }
 
 /// Joint values for a model.
@@ -171,6 +236,42 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             )
         }
         Command::Place { model, q } => on(&model, mechanism::Place { q: q.values()? }),
+        Command::Dynamics { at, qd, qdd, tau } => {
+            let asked = match (qdd, tau) {
+                (Some(qdd), _) => forces::Asked::Inverse {
+                    qdd: numbers("qdd", &qdd)?,
+                },
+                (None, Some(tau)) => forces::Asked::Forward {
+                    tau: numbers("tau", &tau)?,
+                },
+                (None, None) => return Err(Failure("give --qdd or --tau".into())),
+            };
+            let query = forces::Dynamics {
+                joints: at.joints()?,
+                qd: qd.map(|qd| numbers("qd", &qd)).transpose()?,
+                asked,
+                gravity: at.gravity()?,
+            };
+            on(&at.model, query).map_err(|e| naming_the_file(e, &at.model))
+        }
+        Command::Statics {
+            at,
+            load,
+            stiffness,
+            frame,
+        } => {
+            let query = forces::Statics {
+                joints: at.joints()?,
+                loads: load
+                    .iter()
+                    .map(|l| load_spec(l))
+                    .collect::<Result<_, _>>()?,
+                stiffness: stiffness.as_deref().map(stiffness_spec).transpose()?,
+                frame,
+                gravity: at.gravity()?,
+            };
+            on(&at.model, query).map_err(|e| naming_the_file(e, &at.model))
+        }
         Command::Jacobian { model, q, frame } => on(
             &model,
             mechanism::Jacobian {
@@ -284,6 +385,43 @@ fn on<Q: Query>(model: &Path, query: Q) -> Result<Value, Failure> {
         query,
     };
     ask(&on, Some(model))
+}
+
+/// `FRAME:FX,FY,FZ` or `FRAME:FX,FY,FZ,MX,MY,MZ`.
+fn load_spec(text: &str) -> Result<forces::LoadSpec, Failure> {
+    let (frame, values) = text
+        .rsplit_once(':')
+        .ok_or_else(|| Failure(format!("--load: `{text}` is not FRAME:FX,FY,FZ[,MX,MY,MZ]")))?;
+    let v = numbers("load", values)?;
+    let (force, moment) = match v.as_slice() {
+        [fx, fy, fz] => ([*fx, *fy, *fz], [0.0; 3]),
+        [fx, fy, fz, mx, my, mz] => ([*fx, *fy, *fz], [*mx, *my, *mz]),
+        _ => {
+            return Err(Failure(format!(
+                "--load: `{text}` needs three numbers (a force) or six (a force and a moment)"
+            )));
+        }
+    };
+    Ok(forces::LoadSpec {
+        frame: frame.to_owned(),
+        force,
+        moment,
+    })
+}
+
+/// `K` for every joint, or `NAME=K,...`.
+fn stiffness_spec(text: &str) -> Result<forces::Stiffness, Failure> {
+    if text.contains('=') {
+        return named_values(text)
+            .map(forces::Stiffness::Named)
+            .map_err(|Failure(m)| Failure(m.replace("--set", "--stiffness")));
+    }
+    let [k] = fixed(
+        "stiffness",
+        "one number for every joint, or NAME=K,...",
+        text,
+    )?;
+    Ok(forces::Stiffness::All(k))
 }
 
 /// `circle:X,Y,R` or `rect:X,Y,HALF_W,HALF_H`.

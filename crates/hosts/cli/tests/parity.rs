@@ -140,6 +140,7 @@ fn js(case: &Case) -> Option<Reply> {
         "describe" | "home-state" | "fk" | "ik" | "place" | "jacobian" | "collide" => {
             mechanism(&case.command, &a, first())
         }
+        "dynamics" | "statics" => forces(&case.command, &a, first()),
         "field" => field(&a, first()),
         "catalogues" => calls::catalogues(),
         "run" => calls::run_behaviours(first()),
@@ -288,6 +289,42 @@ fn mechanism(command: &str, a: &Args, model: Value) -> Reply {
             )
         }
     }
+}
+
+/// `dynamics` and `statics` as `Mechanism.dynamics` and `.statics` get them.
+fn forces(command: &str, a: &Args, model: Value) -> Reply {
+    let model = calls::load_mechanism(model)?;
+    let mut request = json!({ "q": a.numbers("q").unwrap_or_default() });
+    for key in ["qd", "qdd", "tau", "gravity"] {
+        if let Some(v) = a.numbers(key) {
+            request[key] = json!(v);
+        }
+    }
+    if command == "dynamics" {
+        return calls::dynamics(&model, request);
+    }
+    let loads: Vec<Value> = a
+        .all("load")
+        .iter()
+        .map(|l| {
+            let (frame, values) = l.rsplit_once(':').unwrap();
+            let v = numbers(values);
+            let moment = if v.len() == 6 {
+                v[3..].to_vec()
+            } else {
+                vec![0.0; 3]
+            };
+            json!({ "frame": frame, "force": v[..3], "moment": moment })
+        })
+        .collect();
+    request["loads"] = json!(loads);
+    if let Some(k) = a.number("stiffness") {
+        request["stiffness"] = json!(k);
+    }
+    if let Some(frame) = a.get("frame") {
+        request["frame"] = json!(frame);
+    }
+    calls::statics(&model, request)
 }
 
 fn field(a: &Args, field: Value) -> Reply {

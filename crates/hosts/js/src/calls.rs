@@ -5,7 +5,7 @@
 
 use kinolab_api::mechanism::{self, Query};
 use kinolab_api::{NoFiles, Operation, Source, behaviours, components, control, fields, legs};
-use kinolab_api::{plans, teach, wheels};
+use kinolab_api::{forces, plans, teach, wheels};
 use kinolab_mechanism::Model;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
@@ -309,4 +309,105 @@ pub fn grade_scripts(exercise: String, scripts: Value) -> Reply {
             .map(|(file, text)| kinolab_api::script::Submission::text(file, text))
             .collect(),
     })
+}
+
+/// `{ q?, set?, … }`: every joint in order, or some by name.
+fn posed(
+    q: Option<Vec<f64>>,
+    set: Option<std::collections::BTreeMap<String, f64>>,
+) -> Result<forces::Joints, String> {
+    match (q, set) {
+        (Some(_), Some(_)) => Err("give `q` or `set`, not both".into()),
+        (_, Some(set)) => Ok(forces::Joints::Named(set.into_iter().collect())),
+        (q, None) => Ok(forces::Joints::All(q.unwrap_or_default())),
+    }
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct DynamicsRequest {
+    q: Option<Vec<f64>>,
+    set: Option<std::collections::BTreeMap<String, f64>>,
+    qd: Option<Vec<f64>>,
+    qdd: Option<Vec<f64>>,
+    tau: Option<Vec<f64>>,
+    gravity: Option<[f64; 3]>,
+}
+
+/// `kinolab dynamics` for `{ q | set, qd?, qdd | tau, gravity? }`.
+pub fn dynamics(model: &Model, request: Value) -> Reply {
+    let r: DynamicsRequest = arg("request", request)?;
+    let asked = match (r.qdd, r.tau) {
+        (Some(qdd), None) => forces::Asked::Inverse { qdd },
+        (None, Some(tau)) => forces::Asked::Forward { tau },
+        _ => {
+            return Err(
+                "request: give `qdd` (inverse dynamics) or `tau` (forward), one of them".into(),
+            );
+        }
+    };
+    on(
+        model,
+        &forces::Dynamics {
+            joints: posed(r.q, r.set)?,
+            qd: r.qd,
+            asked,
+            gravity: r.gravity,
+        },
+    )
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LoadRequest {
+    frame: String,
+    force: [f64; 3],
+    #[serde(default)]
+    moment: [f64; 3],
+}
+
+#[derive(serde::Deserialize)]
+#[serde(untagged)]
+enum StiffnessRequest {
+    All(f64),
+    Named(std::collections::BTreeMap<String, f64>),
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StaticsRequest {
+    q: Option<Vec<f64>>,
+    set: Option<std::collections::BTreeMap<String, f64>>,
+    #[serde(default)]
+    loads: Vec<LoadRequest>,
+    stiffness: Option<StiffnessRequest>,
+    frame: Option<String>,
+    gravity: Option<[f64; 3]>,
+}
+
+/// `kinolab statics` for `{ q | set, loads?: [{ frame, force, moment? }],
+/// stiffness?: K | { NAME: K }, frame?, gravity? }`.
+pub fn statics(model: &Model, request: Value) -> Reply {
+    let r: StaticsRequest = arg("request", request)?;
+    on(
+        model,
+        &forces::Statics {
+            joints: posed(r.q, r.set)?,
+            loads: r
+                .loads
+                .into_iter()
+                .map(|l| forces::LoadSpec {
+                    frame: l.frame,
+                    force: l.force,
+                    moment: l.moment,
+                })
+                .collect(),
+            stiffness: r.stiffness.map(|k| match k {
+                StiffnessRequest::All(k) => forces::Stiffness::All(k),
+                StiffnessRequest::Named(set) => forces::Stiffness::Named(set.into_iter().collect()),
+            }),
+            frame: r.frame,
+            gravity: r.gravity,
+        },
+    )
 }

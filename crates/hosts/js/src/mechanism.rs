@@ -65,6 +65,21 @@ impl Mechanism {
         to_js(calls::on(&self.model, &Fk { q, frame }))
     }
 
+    /// What `kinolab dynamics` prints, for `{ q | set, qd?, qdd | tau,
+    /// gravity? }`: with `qdd`, `{ order, tau, gravity, mass_matrix }`
+    /// (inverse dynamics, g(q) and M(q)); with `tau`, `{ order, qdd }`.
+    pub fn dynamics(&self, request: JsValue) -> Result<JsValue, JsError> {
+        to_js(calls::dynamics(&self.model, from_js("request", request)?))
+    }
+
+    /// What `kinolab statics` prints, for `{ q | set, loads?: [{ frame,
+    /// force, moment? }], stiffness?, frame?, gravity? }`: `{ order,
+    /// gravity, load, total, mass, com }`, with `deflection`, `sag` and
+    /// `frame` when a stiffness is given.
+    pub fn statics(&self, request: JsValue) -> Result<JsValue, JsError> {
+        to_js(calls::statics(&self.model, from_js("request", request)?))
+    }
+
     /// What `kinolab place` prints: `{ bodies: [{ name, matrix }] }`, every
     /// body's frame.
     pub fn place(&self, q: Vec<f64>) -> Result<JsValue, JsError> {

@@ -291,6 +291,38 @@ pub const KERNELS: &[Kernel] = &[
         run: mechanism::jacobian_puma,
     },
     Kernel {
+        name: "mech_rnea_puma",
+        run: mechanism::rnea_puma,
+    },
+    Kernel {
+        name: "mech_gravity_puma",
+        run: mechanism::gravity_puma,
+    },
+    Kernel {
+        name: "mech_crba_puma",
+        run: mechanism::crba_puma,
+    },
+    Kernel {
+        name: "mech_aba_puma",
+        run: mechanism::aba_puma,
+    },
+    Kernel {
+        name: "mech_rnea_panda",
+        run: mechanism::rnea_panda,
+    },
+    Kernel {
+        name: "mech_gravity_panda",
+        run: mechanism::gravity_panda,
+    },
+    Kernel {
+        name: "mech_crba_panda",
+        run: mechanism::crba_panda,
+    },
+    Kernel {
+        name: "mech_aba_panda",
+        run: mechanism::aba_panda,
+    },
+    Kernel {
         name: "mech_ik_puma_100_targets",
         run: mechanism::ik_puma_100,
     },

@@ -122,7 +122,7 @@ const PANDA_URDF: &str = include_str!("../../../body/mechanism/robots/panda.urdf
 
 /// One Panda configuration: the seven arm joints (and, in the URDF, the
 /// fingers at zero).
-const PANDA_Q: [f64; 7] = [0.3, -0.5, 0.2, -1.8, 0.4, 1.6, -0.6];
+pub const PANDA_Q: [f64; 7] = [0.3, -0.5, 0.2, -1.8, 0.4, 1.6, -0.6];
 
 /// FK of the Panda's flange, the arm written as modified DH.
 pub fn fk_panda_dh() -> f64 {
@@ -216,4 +216,80 @@ pub fn ik_panda_100() -> f64 {
     static T: OnceLock<Vec<Pose>> = OnceLock::new();
     let targets = ik_targets(&T, panda());
     panda().map_or(f64::NAN, |a| solve_all(a, black_box(targets)) as f64)
+}
+
+/// Joint rates the dynamics kernels use (velocities, accelerations).
+pub const PUMA_QD: [f64; 6] = [0.4, -0.3, 0.5, -0.2, 0.3, 0.1];
+pub const PUMA_QDD: [f64; 6] = [-0.5, 0.2, 0.4, 0.6, -0.1, 0.3];
+pub const PANDA_QD: [f64; 7] = [0.4, -0.3, 0.5, -0.2, 0.3, 0.1, -0.4];
+pub const PANDA_QDD: [f64; 7] = [-0.5, 0.2, 0.4, 0.6, -0.1, 0.3, 0.2];
+
+thread_local! {
+    /// Each arm's dynamics workspace, kept between calls as a controller
+    /// keeps it.
+    static PUMA_DYNAMICS: std::cell::RefCell<Option<kinolab_mechanism::Dynamics>> =
+        const { std::cell::RefCell::new(None) };
+    static PANDA_DYNAMICS: std::cell::RefCell<Option<kinolab_mechanism::Dynamics>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// Which computation a dynamics kernel times.
+#[derive(Debug, Clone, Copy)]
+enum Solve {
+    Rnea,
+    Gravity,
+    Crba,
+    Aba,
+}
+
+fn dynamics_on(panda_arm: bool, solve: Solve) -> f64 {
+    let (arm, q, qd, qdd): (_, &[f64], &[f64], &[f64]) = if panda_arm {
+        (panda(), &PANDA_Q, &PANDA_QD, &PANDA_QDD)
+    } else {
+        (puma(), &PUMA_Q, &PUMA_QD, &PUMA_QDD)
+    };
+    let Some(arm) = arm else { return f64::NAN };
+    let m = &arm.model;
+    let g = kinolab_mechanism::dynamics::EARTH;
+    let cell = if panda_arm {
+        &PANDA_DYNAMICS
+    } else {
+        &PUMA_DYNAMICS
+    };
+    cell.with_borrow_mut(|work| {
+        let work = work.get_or_insert_with(|| m.dynamics());
+        let (q, qd, qdd) = (black_box(q), black_box(qd), black_box(qdd));
+        let first = match solve {
+            Solve::Rnea => m.inverse_dynamics_in(work, q, qd, qdd, g).map(|t| t[0]),
+            Solve::Gravity => m.gravity_in(work, q, g).map(|t| t[0]),
+            Solve::Crba => m.mass_matrix_in(work, q).map(|mm| mm[(0, 0)]),
+            Solve::Aba => m.forward_dynamics_in(work, q, qd, qdd, g).map(|a| a[0]),
+        };
+        first.unwrap_or(f64::NAN)
+    })
+}
+
+pub fn rnea_puma() -> f64 {
+    dynamics_on(false, Solve::Rnea)
+}
+pub fn gravity_puma() -> f64 {
+    dynamics_on(false, Solve::Gravity)
+}
+pub fn crba_puma() -> f64 {
+    dynamics_on(false, Solve::Crba)
+}
+pub fn aba_puma() -> f64 {
+    dynamics_on(false, Solve::Aba)
+}
+pub fn rnea_panda() -> f64 {
+    dynamics_on(true, Solve::Rnea)
+}
+pub fn gravity_panda() -> f64 {
+    dynamics_on(true, Solve::Gravity)
+}
+pub fn crba_panda() -> f64 {
+    dynamics_on(true, Solve::Crba)
+}
+pub fn aba_panda() -> f64 {
+    dynamics_on(true, Solve::Aba)
 }

@@ -10,7 +10,7 @@ use crate::mutate::{Dice, damage_text, format_number, mutate_tree};
 use crate::seeds::Seeds;
 
 /// Every command the generators cover, with its share of the cases.
-pub const COMMANDS: [(&str, u32); 35] = [
+pub const COMMANDS: [(&str, u32); 37] = [
     ("leg-events", 2),
     ("stability", 4),
     ("analyze", 8),
@@ -27,6 +27,8 @@ pub const COMMANDS: [(&str, u32); 35] = [
     ("ik", 8),
     ("place", 3),
     ("jacobian", 3),
+    ("dynamics", 4),
+    ("statics", 3),
     ("collide", 4),
     ("field", 10),
     ("catalogues", 1),
@@ -131,6 +133,7 @@ fn for_command(dice: &mut Dice, seeds: &Seeds, command: &str, valid: bool) -> Ca
             g.arg(&text);
         }
         "fk" | "ik" | "place" | "jacobian" | "collide" => model_case(&mut g, seeds, command),
+        "dynamics" | "statics" => forces_case(&mut g, seeds, command),
         "field" => field_case(&mut g, seeds),
         "run" => {
             g.file_arg(&seeds.behaviour_runs, &[], "behaviours.run.json");
@@ -616,6 +619,35 @@ fn model_case(g: &mut Gen<'_>, seeds: &Seeds, command: &str) {
     if command != "place" && command != "collide" && g.dice.chance(0.2) {
         let frame = g.pick_text(&["tool", "base", "world"], &["q1", "nope", "tool\ntool"]);
         g.option("--frame", &frame);
+    }
+}
+
+/// `dynamics` (inverse or forward) or `statics` (loads, springs) of a
+/// model at some joint values.
+fn forces_case(g: &mut Gen<'_>, seeds: &Seeds, command: &str) {
+    let seed = g.file_arg(&seeds.models, &seeds.model_ids, "arm.model.json");
+    let dof = dof_of(g, seed);
+    g.option_numbers("--q", dof);
+    if g.dice.chance(0.3) {
+        g.option_numbers("--gravity", 3);
+    }
+    if command == "dynamics" {
+        if g.dice.chance(0.6) {
+            g.option_numbers("--qd", dof);
+        }
+        let asked = if g.dice.chance(0.5) { "--qdd" } else { "--tau" };
+        g.option_numbers(asked, dof);
+        return;
+    }
+    for _ in 0..g.dice.below(3) {
+        let frame = g.pick_text(&["tool", "base"], &["nope", ""]);
+        let count = if g.dice.chance(0.5) { 3 } else { 6 };
+        let values = g.numbers(count);
+        g.option("--load", &format!("{frame}:{values}"));
+    }
+    if g.dice.chance(0.5) {
+        let k = g.pick_text(&["2000", "150.5"], &["0", "-3", "x"]);
+        g.option("--stiffness", &k);
     }
 }
 

@@ -1,5 +1,7 @@
 //! `cargo xtask bench --anchors`: the mechanism kernels beside Pinocchio,
-//! the reference rigid-body library, on the same Puma, in the same run.
+//! the reference rigid-body library, on the same arms (a 6-joint Puma and
+//! a 7-joint Panda, with their masses), in the same run: kinematics and the
+//! dynamics (RNEA, gravity, CRBA, ABA).
 //!
 //! Pinocchio comes from its PyPI wheel (`pin`, which ships the C++ headers
 //! and libraries) installed in a virtual environment under `target/`, and
@@ -14,24 +16,55 @@ use std::process::Command;
 
 use crate::setup::{Result, output, path_env, root, run};
 
-/// Our kernel, and the Pinocchio call it is measured against.
-const PAIRS: [(&str, &str, &str); 3] = [
+/// The arm, our kernel, and the Pinocchio call it is measured against
+/// (its `time` key in the anchor's output, and its name).
+const PAIRS: [(&str, &str, &str, &str); 12] = [
     (
+        "puma",
         "mech_fk_puma_tool",
-        "fk_puma",
+        "fk",
         "forwardKinematics + updateFramePlacement",
     ),
     (
+        "puma",
         "mech_jacobian_puma",
-        "jacobian_puma",
+        "jacobian",
         "computeJointJacobian",
     ),
     (
+        "puma",
         "mech_jacobian_puma",
-        "jacobian_puma_frame",
+        "jacobian_frame",
         "computeFrameJacobian (LOCAL_WORLD_ALIGNED)",
     ),
+    ("puma", "mech_rnea_puma", "rnea", "rnea"),
+    (
+        "puma",
+        "mech_gravity_puma",
+        "gravity",
+        "computeGeneralizedGravity",
+    ),
+    ("puma", "mech_crba_puma", "crba", "crba"),
+    ("puma", "mech_aba_puma", "aba", "aba"),
+    (
+        "panda",
+        "mech_fk_panda_dh_flange",
+        "fk",
+        "forwardKinematics + updateFramePlacement",
+    ),
+    ("panda", "mech_rnea_panda", "rnea", "rnea"),
+    (
+        "panda",
+        "mech_gravity_panda",
+        "gravity",
+        "computeGeneralizedGravity",
+    ),
+    ("panda", "mech_crba_panda", "crba", "crba"),
+    ("panda", "mech_aba_panda", "aba", "aba"),
 ];
+
+/// The arms the anchor is run on.
+const ARMS: [&str; 2] = ["puma", "panda"];
 
 const ROUNDS: usize = 3;
 const PIN_VERSION: &str = "4.1.0";
@@ -48,33 +81,43 @@ pub fn anchors() -> Result {
             None
         }
     };
-    let model = dir.join("puma.txt");
-    let description = output(
-        "cargo",
-        &[
-            "run",
-            "-q",
-            "--release",
-            "-p",
-            "kinolab-bench",
-            "--example",
-            "puma_model",
-        ],
-    )
-    .ok_or("cannot describe the Puma (cargo run --example puma_model failed)")?;
-    fs::write(&model, &description)
-        .map_err(|e| format!("cannot write {}: {e}", model.display()))?;
+    let mut described = Vec::new();
+    for arm in ARMS {
+        let description = output(
+            "cargo",
+            &[
+                "run",
+                "-q",
+                "--release",
+                "-p",
+                "kinolab-bench",
+                "--example",
+                "arm_model",
+                "--",
+                arm,
+            ],
+        )
+        .ok_or(format!(
+            "cannot describe the {arm} (cargo run --example arm_model failed)"
+        ))?;
+        let model = dir.join(format!("{arm}.txt"));
+        fs::write(&model, &description)
+            .map_err(|e| format!("cannot write {}: {e}", model.display()))?;
+        described.push((arm, model, description));
+    }
     let mut rows = Vec::new();
     for round in 1..=ROUNDS {
         let ours = criterion_round()?;
-        let theirs = match &anchor {
-            Some(exe) => anchor_round(exe, &model, &description)?,
-            None => Vec::new(),
-        };
-        for (kernel, call, name) in PAIRS {
-            let mine = ours.iter().find(|(k, _)| k == kernel).map(|(_, t)| *t);
-            let pin = theirs.iter().find(|(k, _)| k == call).map(|(_, t)| *t);
-            rows.push((round, kernel, name, mine, pin));
+        for (arm, model, description) in &described {
+            let theirs = match &anchor {
+                Some(exe) => anchor_round(exe, model, description)?,
+                None => Vec::new(),
+            };
+            for (which, kernel, call, name) in PAIRS.iter().filter(|p| p.0 == *arm) {
+                let mine = ours.iter().find(|(k, _)| k == kernel).map(|(_, t)| *t);
+                let pin = theirs.iter().find(|(k, _)| k == call).map(|(_, t)| *t);
+                rows.push((round, *which, *kernel, *name, mine, pin));
+            }
         }
     }
     let report = table(&rows);
@@ -109,8 +152,8 @@ fn build_anchor(dir: &Path) -> Result<PathBuf> {
         .map_err(|e| format!("cannot install the `pin` wheel from PyPI: {e}"))?;
     }
     let prefix = cmeel_prefix(&venv);
-    let source = root().join("crates/tools/bench/anchor/pinocchio_puma.cpp");
-    let exe = dir.join("pinocchio_puma");
+    let source = root().join("crates/tools/bench/anchor/pinocchio_arm.cpp");
+    let exe = dir.join("pinocchio_arm");
     if is_newer(&exe, &source) {
         return Ok(exe);
     }
@@ -158,8 +201,11 @@ fn is_newer(a: &Path, than: &Path) -> bool {
     matches!((modified(a), modified(than)), (Some(a), Some(b)) if a >= b)
 }
 
-/// One criterion run of our two kernels; their medians in ns.
+/// One criterion run of our kernels; their medians in ns.
 fn criterion_round() -> Result<Vec<(String, f64)>> {
+    let mut kernels: Vec<&str> = PAIRS.iter().map(|p| p.1).collect();
+    kernels.dedup();
+    let filter = format!("^({})$", kernels.join("|"));
     run(Command::new("cargo")
         .env("PATH", path_env())
         .args([
@@ -172,9 +218,9 @@ fn criterion_round() -> Result<Vec<(String, f64)>> {
             "--",
         ])
         .args(["--warm-up-time", "1", "--measurement-time", "3"])
-        .arg("^mech_(fk_puma_tool|jacobian_puma)$"))?;
+        .arg(&filter))?;
     let mut out = Vec::new();
-    for kernel in ["mech_fk_puma_tool", "mech_jacobian_puma"] {
+    for kernel in kernels {
         let path = root().join(format!("target/criterion/{kernel}/new/estimates.json"));
         let text = fs::read_to_string(&path)
             .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
@@ -200,12 +246,13 @@ fn anchor_round(exe: &Path, model: &Path, description: &str) -> Result<Vec<(Stri
         .output()
         .map_err(|e| format!("cannot run {}: {e}", exe.display()))?;
     let text = String::from_utf8_lossy(&out.stdout);
-    for check in ["tool", "jacobian_norm"] {
+    for check in ["tool", "jacobian_norm", "tau", "mass_diagonal", "forward"] {
         let ours = field(description, &format!("# ours {check}"));
         let theirs = field(&text, &format!("check {check}"));
         let same = match (ours, theirs) {
             (Some(a), Some(b)) if a.len() == b.len() => {
-                a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-9)
+                let scale = b.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+                a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-9 * scale)
             }
             _ => false,
         };
@@ -227,36 +274,37 @@ fn field(text: &str, prefix: &str) -> Option<Vec<f64>> {
     line.split_whitespace().map(|v| v.parse().ok()).collect()
 }
 
-type Row<'a> = (usize, &'a str, &'a str, Option<f64>, Option<f64>);
+type Row<'a> = (usize, &'a str, &'a str, &'a str, Option<f64>, Option<f64>);
 
 fn table(rows: &[Row<'_>]) -> String {
     let ns = |t: Option<f64>| t.map_or("—".to_string(), |t| format!("{t:.1} ns"));
     let mut lines = vec![
-        "| pair | Kinolab kernel | Kinolab | Pinocchio 4.1 call | Pinocchio | ratio |".to_string(),
-        "|---:|---|---:|---|---:|---:|".to_string(),
+        "| pair | arm | Kinolab kernel | Kinolab | Pinocchio 4.1 call | Pinocchio | ratio |"
+            .to_string(),
+        "|---:|---|---|---:|---|---:|---:|".to_string(),
     ];
-    for &(round, kernel, call, mine, pin) in rows {
+    for &(round, arm, kernel, call, mine, pin) in rows {
         let ratio = match (mine, pin) {
             (Some(a), Some(b)) if b > 0.0 => format!("{:.2}×", a / b),
             _ => "—".to_string(),
         };
         lines.push(format!(
-            "| {round} | {kernel} | {} | {call} | {} | {ratio} |",
+            "| {round} | {arm} | {kernel} | {} | {call} | {} | {ratio} |",
             ns(mine),
             ns(pin)
         ));
     }
-    for (kernel, _, call) in PAIRS {
+    lines.push(String::new());
+    for (arm, kernel, _, call) in PAIRS {
         let mut ratios: Vec<f64> = rows
             .iter()
-            .filter(|r| r.1 == kernel && r.2 == call)
-            .filter_map(|r| Some(r.3? / r.4?))
+            .filter(|r| r.1 == arm && r.2 == kernel && r.3 == call)
+            .filter_map(|r| Some(r.4? / r.5?))
             .collect();
         ratios.sort_by(f64::total_cmp);
         if let Some(mid) = ratios.get(ratios.len() / 2) {
-            lines.push(String::new());
             lines.push(format!(
-                "{kernel} / {call}: median {mid:.2}× over {} pairs ({:.2}–{:.2}×)",
+                "- {arm}, {kernel} / {call}: median {mid:.2}× over {} pairs ({:.2}–{:.2}×)",
                 ratios.len(),
                 ratios[0],
                 ratios[ratios.len() - 1]

@@ -11,7 +11,9 @@ use super::read::{Description, Geometry, JointSpec, Kind, Place, Solid};
 use crate::error::FieldError;
 use crate::model::{Joint, JointKind, ModelBuilder, Pose};
 
-pub(super) fn robot(d: Description) -> Result<Robot, FieldError> {
+pub(super) fn robot(mut d: Description) -> Result<Robot, FieldError> {
+    let mut notices = settle_mimics(&mut d);
+    notices.extend(d.joints.iter().filter_map(|j| j.notice.clone()));
     let links = link_index(&d)?;
     let parents = parent_joints(&d, &links)?;
     let root = root(&d, &parents)?;
@@ -24,8 +26,14 @@ pub(super) fn robot(d: Description) -> Result<Robot, FieldError> {
         if i != root {
             body_of[i] = builder.body(link.at.name.clone());
         }
+        builder.bodies[body_of[i]].inertial = link.inertial;
+        if let Some(why) = link.inertial.as_ref().and_then(crate::Inertial::problem) {
+            notices.push(format!(
+                "link `{}`: the inertia {why}; it is read as written",
+                link.at.name
+            ));
+        }
     }
-    let mut notices = Vec::new();
     for j in &d.joints {
         builder.joints.push(joint(j, &links, &body_of));
         if let Kind::Free(kind) = j.kind {
@@ -50,13 +58,14 @@ pub(super) fn robot(d: Description) -> Result<Robot, FieldError> {
         ));
     }
     couple(&d, &mut builder)?;
-    let model = builder.build()?;
-    let driven = d
+    let mut model = builder.build()?;
+    let driven: Vec<usize> = d
         .joints
         .iter()
         .filter(|j| j.mimic.is_none() && !matches!(j.kind, Kind::Fixed | Kind::Free(_)))
         .filter_map(|j| model.variable(&j.at.name))
         .collect();
+    model.driven.clone_from(&driven);
     let tip = model.tip().to_owned();
     Ok(Robot {
         model,
@@ -194,6 +203,33 @@ fn joint(j: &JointSpec, links: &HashMap<&str, usize>, body_of: &[usize]) -> Join
 
 /// Mimic joints as couplings. A mimic of a mimic follows the first leader
 /// with the multipliers and offsets composed.
+/// Mimics that ROS and Pinocchio read past, skipped with a notice each: a
+/// fixed joint's (it has nothing to move), and one naming a joint the file
+/// does not have (the joint is read as a joint of its own).
+fn settle_mimics(d: &mut Description) -> Vec<String> {
+    let names: std::collections::HashSet<String> =
+        d.joints.iter().map(|j| j.at.name.clone()).collect();
+    let mut notices = Vec::new();
+    for j in &mut d.joints {
+        let Some((leader, ..)) = &j.mimic else {
+            continue;
+        };
+        let why = if !j.kind_moves() {
+            "it does not move"
+        } else if !names.contains(leader) {
+            "the file has no joint of that name"
+        } else {
+            continue;
+        };
+        notices.push(format!(
+            "joint `{}` mimics `{leader}`, but {why}: the mimic is skipped",
+            j.at.name
+        ));
+        j.mimic = None;
+    }
+    notices
+}
+
 fn couple(d: &Description, builder: &mut ModelBuilder) -> Result<(), FieldError> {
     let by_name: HashMap<&str, &JointSpec> =
         d.joints.iter().map(|j| (j.at.name.as_str(), j)).collect();

@@ -107,6 +107,28 @@ impl Robot {
         Ok(state)
     }
 
+    /// Rates (velocities, accelerations, torques) of the driven joints in
+    /// file order, as a model's vector: the other entries 0 (a follower's
+    /// rate comes from its leader).
+    pub fn rates(&self, field: &str, rates: &[f64]) -> Result<Vec<f64>, FieldError> {
+        if rates.len() != self.driven.len() {
+            return Err(FieldError::new(
+                field,
+                format!(
+                    "`{}` has {} movable joints, got {} values",
+                    self.model.name(),
+                    self.driven.len(),
+                    rates.len()
+                ),
+            ));
+        }
+        let mut out = vec![0.0; self.model.dof()];
+        for (&v, &r) in self.driven.iter().zip(rates) {
+            out[v] = r;
+        }
+        Ok(out)
+    }
+
     /// The driven joints' values in a model state, in file order.
     pub fn values(&self, state: &[f64]) -> Vec<f64> {
         self.driven

@@ -39,6 +39,7 @@ impl Place {
 pub(super) struct LinkSpec {
     pub at: Place,
     pub shapes: Vec<Geometry>,
+    pub inertial: Option<crate::Inertial>,
 }
 
 /// One collision element: its pose on the link and its shape.
@@ -78,6 +79,8 @@ pub(super) struct JointSpec {
     pub limits: Option<[f64; 2]>,
     /// Leader, multiplier, offset.
     pub mimic: Option<(String, f64, f64)>,
+    /// What was read differently from the file, if anything.
+    pub notice: Option<String>,
 }
 
 /// Parse the text into links and joints.
@@ -87,6 +90,7 @@ pub(super) fn parse(text: &str) -> Result<Description, FieldError> {
         nodes_limit: MAX_NODES,
         ..ParsingOptions::default()
     };
+    let text = &without_late_declaration(text);
     let doc = Document::parse_with_options(text, options).map_err(|e| {
         let pos = e.pos();
         FieldError::new(format!("line {}", pos.row), format!("not valid XML: {e}"))
@@ -120,6 +124,25 @@ pub(super) fn parse(text: &str) -> Result<Description, FieldError> {
     Ok(out)
 }
 
+/// `text` with an XML declaration that comes after blank lines blanked
+/// out: XML allows it only at the very start, but browsers, ROS and
+/// Pinocchio read past the blank lines, and so does the lab. The
+/// declaration becomes spaces, so every line keeps its number.
+fn without_late_declaration(text: &str) -> std::borrow::Cow<'_, str> {
+    let body = text.trim_start();
+    let blank = text.len() - body.len();
+    match (blank, body.starts_with("<?xml"), body.find("?>")) {
+        (1.., true, Some(end)) => {
+            let mut out = String::with_capacity(text.len());
+            out.push_str(&text[..blank]);
+            out.push_str(&" ".repeat(end + 2));
+            out.push_str(&body[end + 2..]);
+            std::borrow::Cow::Owned(out)
+        }
+        _ => std::borrow::Cow::Borrowed(text),
+    }
+}
+
 fn place(doc: &Document<'_>, node: Node<'_, '_>, tag: &'static str) -> Result<Place, FieldError> {
     let line = doc.text_pos_at(node.range().start).row;
     let name = node.attribute("name").unwrap_or_default().to_owned();
@@ -151,7 +174,39 @@ fn link(doc: &Document<'_>, node: Node<'_, '_>) -> Result<LinkSpec, FieldError> 
             shape: geometry(&at, solid)?,
         });
     }
-    Ok(LinkSpec { at, shapes })
+    let inertial = match child(node, "inertial") {
+        Some(i) => Some(inertial(&at, i)?),
+        None => None,
+    };
+    Ok(LinkSpec {
+        at,
+        shapes,
+        inertial,
+    })
+}
+
+/// `<inertial>`: the centre of mass and the inertia's axes (`<origin>`),
+/// `<mass value>` and `<inertia ixx … izz>` about the centre of mass in
+/// those axes; turned into the link's own axes.
+fn inertial(at: &Place, node: Node<'_, '_>) -> Result<crate::Inertial, FieldError> {
+    let frame = origin(at, child(node, "origin"))?;
+    let [mass] = match child(node, "mass") {
+        Some(m) => numbers(at, m, "value", None)?,
+        None => return Err(at.error("an <inertial> needs a <mass value=\"…\"/>")),
+    };
+    let entries = match child(node, "inertia") {
+        Some(i) => ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"]
+            .iter()
+            .map(|name| numbers::<1>(at, i, name, Some([0.0])).map(|[v]| v))
+            .collect::<Result<Vec<f64>, FieldError>>()?,
+        None => vec![0.0; 6],
+    };
+    let mut six = [0.0; 6];
+    six.copy_from_slice(&entries);
+    let place = format!("<{} name=\"{}\"> (line {})", at.tag, at.name, at.line);
+    let local = crate::Inertial::as_written(&place, mass, [0.0; 3], six)?;
+    let r = *frame.rotation.to_rotation_matrix().matrix();
+    Ok(local.moved(&r, &frame.translation.vector))
 }
 
 fn geometry(at: &Place, solid: Node<'_, '_>) -> Result<Solid, FieldError> {
@@ -216,12 +271,26 @@ fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointSpec, FieldError
     }
     let limits = match (kind, child(node, "limit")) {
         (Kind::Revolute | Kind::Prismatic, Some(limit)) => {
-            let [lo] = numbers(&at, limit, "lower", Some([0.0]))?;
-            let [hi] = numbers(&at, limit, "upper", Some([0.0]))?;
+            // Any finite limit, however large, is read as written.
+            let bound = |name: &str| -> Result<f64, FieldError> {
+                let Some(text) = limit.attribute(name) else {
+                    return Ok(0.0);
+                };
+                text.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .ok_or_else(|| {
+                        at.error(format!("<limit {name}=\"{text}\"> needs a finite number"))
+                    })
+            };
+            let (lo, hi) = (bound("lower")?, bound("upper")?);
             if lo > hi {
                 return Err(at.error(format!("limit lower {lo} is above upper {hi}")));
             }
-            Some([lo, hi])
+            // Equal bounds (both 0 when a file gives none) are URDF's
+            // default: no position limit.
+            (lo != hi).then_some([lo, hi])
         }
         (Kind::Revolute | Kind::Prismatic, None) => {
             return Err(at.error("a revolute or prismatic joint needs a <limit>"));
@@ -239,6 +308,13 @@ fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointSpec, FieldError
             Some((leader.to_owned(), k, offset))
         }
     };
+    let notice =
+        (matches!(kind, Kind::Revolute | Kind::Prismatic) && limits.is_none()).then(|| {
+            format!(
+                "joint `{}`: equal lower and upper limits, read as no position limit",
+                at.name
+            )
+        });
     Ok(JointSpec {
         at,
         kind,
@@ -248,6 +324,7 @@ fn joint(doc: &Document<'_>, node: Node<'_, '_>) -> Result<JointSpec, FieldError
         axis,
         limits,
         mimic,
+        notice,
     })
 }
 

@@ -37,7 +37,7 @@ pub struct Written {
 pub fn write(model: &Model) -> Written {
     let mut out = Out::new(model);
     for (b, body) in model.bodies().iter().enumerate() {
-        out.link(&body.name, model.shapes().iter().filter(|s| s.body == b));
+        out.link_of(body, model.shapes().iter().filter(|s| s.body == b));
     }
     for joint in model.joints() {
         out.joint(joint);
@@ -122,7 +122,31 @@ impl<'m> Out<'m> {
     }
 
     fn link<'s>(&mut self, name: &str, shapes: impl Iterator<Item = &'s Shape>) {
+        self.link_with(name, None, shapes);
+    }
+
+    /// A body's link: its capsules, and its mass when it has one.
+    fn link_of<'s>(&mut self, body: &crate::Body, shapes: impl Iterator<Item = &'s Shape>) {
+        self.link_with(&body.name, body.inertial.as_ref(), shapes);
+    }
+
+    fn link_with<'s>(
+        &mut self,
+        name: &str,
+        inertial: Option<&crate::Inertial>,
+        shapes: impl Iterator<Item = &'s Shape>,
+    ) {
         let mut solids = String::new();
+        if let Some(i) = inertial {
+            // The tensor in the link's axes: the inertial origin turns none.
+            let [ixx, ixy, ixz, iyy, iyz, izz] = i.entries();
+            let _ = write!(
+                solids,
+                "    <inertial>\n      <origin xyz=\"{}\" rpy=\"0 0 0\"/>\n      <mass value=\"{}\"/>\n      <inertia ixx=\"{ixx}\" ixy=\"{ixy}\" ixz=\"{ixz}\" iyy=\"{iyy}\" iyz=\"{iyz}\" izz=\"{izz}\"/>\n    </inertial>\n",
+                triple(&i.com),
+                i.mass
+            );
+        }
         for shape in shapes {
             capsule(&mut solids, shape);
         }
