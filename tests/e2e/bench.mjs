@@ -3,6 +3,7 @@
 // smooth.mjs).
 //
 // usage: node tests/e2e/bench.mjs CRITERION_DIR BENCH_WEB_DIR
+// (ONLY=regex times only the kernels whose names match)
 import { readFile, readdir, stat, writeFile, mkdir } from "node:fs/promises";
 import { join } from "node:path";
 import { serve, launch } from "./serve.mjs";
@@ -25,7 +26,10 @@ const benchServer = await serve(benchWeb);
 const page = await browser.newPage();
 await page.goto(benchServer.url);
 await page.waitForFunction(() => window.benchReady, null, { timeout: 60_000 });
-const names = (await page.evaluate(() => window.bench.kernel_names())).split(",");
+const only = process.env.ONLY ? new RegExp(process.env.ONLY) : null;
+const names = (await page.evaluate(() => window.bench.kernel_names()))
+  .split(",")
+  .filter((n) => !only || only.test(n));
 const rows = [];
 for (const name of names) {
   // Warm up first: Chromium starts wasm in its baseline compiler and

@@ -153,17 +153,38 @@ impl Rigid {
 
     /// The same body in the parent's frame, where this frame sits at
     /// rotation `r` and shift `p`.
+    #[inline]
     pub fn seen_in_parent(&self, r: &Matrix3<f64>, p: &Vector3<f64>) -> Rigid {
-        let rh = r * self.h;
-        let px = cross_matrix(p);
-        let rhx = cross_matrix(&rh);
+        // The rotated tensor r·I·rᵀ plus the shift of the origin,
+        // −([p]×[q]× + [q]×[p]×) − m[p]×², where [a]×[b]× = b aᵀ − (a·b) 1:
+        // both symmetric, so only the upper six entries are computed.
+        let q = r * self.h;
+        let ri = r * self.io;
+        let mp = p * self.m;
+        let diagonal = 2.0 * p.dot(&q) + mp.dot(p);
+        let entry = |i: usize, j: usize| {
+            let rotated = ri[(i, 0)] * r[(j, 0)] + ri[(i, 1)] * r[(j, 1)] + ri[(i, 2)] * r[(j, 2)];
+            rotated - q[i] * p[j] - p[i] * q[j] - mp[i] * p[j]
+        };
+        let (xy, xz, yz) = (entry(0, 1), entry(0, 2), entry(1, 2));
         Rigid {
             m: self.m,
-            h: rh + p * self.m,
-            io: r * self.io * r.transpose() - (rhx * px + px * rhx) - px * px * self.m,
+            h: q + mp,
+            io: Matrix3::new(
+                entry(0, 0) + diagonal,
+                xy,
+                xz,
+                xy,
+                entry(1, 1) + diagonal,
+                yz,
+                xz,
+                yz,
+                entry(2, 2) + diagonal,
+            ),
         }
     }
 
+    #[inline]
     pub fn add(&mut self, other: &Rigid) {
         self.m += other.m;
         self.h += other.h;

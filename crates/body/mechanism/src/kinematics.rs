@@ -36,6 +36,26 @@ impl Model {
         Ok(Placement { bodies, joints })
     }
 
+    /// An arm as a line of points in `plane`: the origin of each joint's
+    /// moving body, in joint order, then `frame`'s origin (what a drawing
+    /// of the arm from above or from the side joins up).
+    pub fn chain_in_plane(
+        &self,
+        q: &[f64],
+        frame: &FrameRef,
+        plane: crate::shapes::Plane,
+    ) -> Result<Vec<[f64; 2]>, FieldError> {
+        let placed = self.place(q)?;
+        let mut points: Vec<[f64; 2]> = self
+            .joints
+            .iter()
+            .map(|j| plane.project(&placed.bodies[j.child].translation.vector))
+            .collect();
+        let end = placed.bodies[frame.body] * frame.offset;
+        points.push(plane.project(&end.translation.vector));
+        Ok(points)
+    }
+
     /// Move `t` from joint `j`'s parent frame onto the joint's axis.
     #[inline]
     fn enter(&self, t: &mut Pose, j: usize) {

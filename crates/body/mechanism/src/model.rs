@@ -139,6 +139,8 @@ pub struct Model {
     pub(crate) parent_joint: Vec<Option<usize>>,
     /// Each body's mass as the dynamics use it (zero when massless).
     pub(crate) rigid: Vec<crate::inertial::Rigid>,
+    /// The moving joints as the dynamics walk them (see `dynamics::tree`).
+    pub(crate) tree: crate::dynamics::tree::Tree,
     /// The variables a user sets, in the order they are given: every
     /// variable but the followers, in the model's order, unless the file
     /// the model came from lists them otherwise (a URDF file's order).
@@ -314,8 +316,10 @@ impl ModelBuilder {
             commands: Default::default(),
             parent_joint,
             rigid,
+            tree: Default::default(),
             driven: Vec::new(),
         };
+        model.tree = crate::dynamics::tree::Tree::of(&model);
         model.couplings = crate::compose::resolve_couplings(&model, &self.couplings)?;
         model.loops = crate::compose::resolve_loops(&model, &self.loops)?;
         model.driven = (0..model.dof())
@@ -572,12 +576,7 @@ impl Model {
                 ),
             ));
         }
-        // The field name is only written out when something is wrong.
-        let limit = crate::error::MAGNITUDE_LIMIT;
-        if let Some(i) = q.iter().position(|v| !v.is_finite() || v.abs() > limit) {
-            crate::error::finite_at(q[i], || format!("q[{i}]"))?;
-        }
-        Ok(())
+        crate::error::all_finite("q", q)
     }
 
     /// Clamp each value into its joint's limits.

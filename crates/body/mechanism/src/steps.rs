@@ -24,10 +24,15 @@ pub(crate) enum Principal {
 }
 
 impl Principal {
-    fn of(a: &Vector3<f64>) -> Option<Principal> {
+    pub(crate) fn of(a: &Vector3<f64>) -> Option<Principal> {
         [Principal::X, Principal::Y, Principal::Z]
             .into_iter()
             .find(|p| *a == p.unit())
+    }
+
+    /// The axis's coordinate: 0, 1 or 2.
+    pub(crate) fn index(self) -> usize {
+        self as usize
     }
 
     fn unit(self) -> Vector3<f64> {

@@ -277,3 +277,29 @@ fn prepared_walks_match_the_full_placement() -> Result<(), FieldError> {
     }
     Ok(())
 }
+
+#[test]
+fn an_arm_seen_from_the_side_is_its_joints_then_its_tool() -> Result<(), FieldError> {
+    use kinolab_mechanism::Plane;
+    let arm = mechanism("vertical-2r")?;
+    let level = arm.chain_in_plane(&[0.0, 0.0], &tool(&arm), Plane::Side)?;
+    let want = [[0.0, 0.0], [0.5, 0.0], [0.9, 0.0]];
+    assert_eq!(level.len(), want.len(), "{level:?}");
+    for (got, want) in level.iter().zip(want) {
+        assert!(
+            (got[0] - want[0]).abs() < 1e-12 && (got[1] - want[1]).abs() < 1e-12,
+            "{level:?}"
+        );
+    }
+    // Up at the shoulder and bent back at the elbow: the tool is where FK puts it.
+    let q = [FRAC_PI_2, -FRAC_PI_2];
+    let bent = arm.chain_in_plane(&q, &tool(&arm), Plane::Side)?;
+    let end = arm.pose(&q, &tool(&arm))?.translation.vector;
+    let last = bent.last().copied().unwrap_or_default();
+    assert!((last[0] - end.x).abs() < 1e-12 && (last[1] - end.z).abs() < 1e-12);
+    assert!(
+        (last[0] - 0.4).abs() < 1e-12 && (last[1] - 0.5).abs() < 1e-12,
+        "{bent:?}"
+    );
+    Ok(())
+}

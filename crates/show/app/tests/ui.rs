@@ -958,6 +958,8 @@ const DESCRIBED: &[(&str, &[&str])] = &[
         "dh-link",
         &["DH:", "a = ", "α = ", "d = ", "θ = ", "Frame i"],
     ),
+    ("arm-statics", &["Holding the arm with", "shoulder", "N·m"]),
+    ("arm-fall", &["At t =", "the energy is", " J"]),
     ("field-sandbox", &["A field of", "trap"]),
     ("behaviour-arena", &["coordination", "has control"]),
     ("braitenberg", &["s into the run", "vehicle 1", "light"]),

@@ -38,6 +38,8 @@ pub const CONSTRUCTORS: &[(&str, Constructor)] = &[
     ("controller-playground", control::playground::create),
     ("mechanism-viewer", mechanism::viewer::create),
     ("dh-link", mechanism::dh_link::create),
+    ("arm-statics", mechanism::holding::create),
+    ("arm-fall", mechanism::falling::create),
     ("field-sandbox", fields::sandbox::create),
     ("behaviour-arena", behaviour::arena::create),
     ("braitenberg", behaviour::braitenberg::create),

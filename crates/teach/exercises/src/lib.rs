@@ -10,6 +10,7 @@
 //! (legged locomotion) and [`architecture`].
 
 pub mod architecture;
+pub mod arm;
 pub mod behaviours;
 pub mod control;
 pub mod fields;
@@ -33,6 +34,10 @@ pub enum Hook {
     Field,
     Sequencer,
     Legs,
+    /// An arm's joint controller: listed as a `control` hook, like the
+    /// wheeled robot's, with the arm's own signature.
+    #[serde(rename = "control")]
+    Arm,
 }
 
 impl Hook {
@@ -45,6 +50,7 @@ impl Hook {
             Hook::Field => "[fx, fy]",
             Hook::Sequencer => "#{ replan, target }",
             Hook::Legs => "#{ stance, at: [x, y, z] }",
+            Hook::Arm => "[tau1, tau2]",
         }
     }
 }
@@ -85,6 +91,7 @@ pub enum Trial {
     Behaviours(behaviours::Trial),
     Field(fields::Trial),
     Legs(legs::Trial),
+    Arm(arm::Trial),
     Arena(architecture::Trial),
 }
 
@@ -138,6 +145,7 @@ impl Outcome {
 pub fn all() -> Vec<Exercise> {
     [
         control::EXERCISES.as_slice(),
+        arm::EXERCISES.as_slice(),
         behaviours::EXERCISES.as_slice(),
         fields::EXERCISES.as_slice(),
         legs::EXERCISES.as_slice(),
@@ -241,6 +249,7 @@ impl Exercise {
             Trial::Behaviours(t) => behaviours::run(self.hook, source, world, t),
             Trial::Field(t) => fields::run(source, world, t),
             Trial::Legs(t) => legs::run(source, world, t),
+            Trial::Arm(t) => arm::run(source, world, t),
             Trial::Arena(t) => architecture::run(source, world, t),
         }
     }

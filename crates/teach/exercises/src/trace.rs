@@ -36,6 +36,9 @@ pub enum Scene {
     },
     /// The hexapod from above: its centre of mass.
     Legs { com: [f64; 2] },
+    /// An arm from the side (x along, z up): its joints and tool where
+    /// the target would put them, and its reach.
+    Arm { target: Vec<[f64; 2]>, reach: f64 },
 }
 
 /// An obstacle's outline, as the stepper draws it.
@@ -116,6 +119,9 @@ pub struct Tick {
     pub rays: Vec<[f64; 2]>,
     /// The feet (x, y, standing), walks only.
     pub feet: Vec<[f64; 3]>,
+    /// The arm's joints and tool from the side (x, z), arms only.
+    #[serde(default)]
+    pub links: Vec<[f64; 2]>,
 }
 
 /// A world run with the learner's code, recorded.
@@ -160,6 +166,7 @@ impl Exercise {
             Trial::Control(t) => self.at_once(source, world, control(source, t)),
             Trial::Field(t) => self.at_once(source, world, field(source, t)),
             Trial::Legs(t) => self.at_once(source, world, legs(source, t)),
+            Trial::Arm(t) => self.at_once(source, world, arm(source, t)),
         };
         Tracing {
             job,
@@ -331,6 +338,7 @@ fn control(source: &str, t: &crate::control::Trial) -> Recorded {
             output: c.output.clone(),
             rays: Vec::new(),
             feet: Vec::new(),
+            links: Vec::new(),
         })
         .collect();
     (Scene::Plane { area }, path, ticks)
@@ -410,6 +418,7 @@ fn behaviours_tick(frame: Frame) -> Option<Tick> {
         output: call.output,
         rays: p.rays.iter().map(|r| [r.angle, r.range]).collect(),
         feet: Vec::new(),
+        links: Vec::new(),
     })
 }
 fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
@@ -441,6 +450,7 @@ fn field(source: &str, t: &crate::fields::Trial) -> Recorded {
             output,
             rays: Vec::new(),
             feet: Vec::new(),
+            links: Vec::new(),
         });
     }
     let cells = kinolab_world::Rect::from(area);
@@ -501,6 +511,7 @@ fn legs(source: &str, t: &crate::legs::Trial) -> Recorded {
                 .iter()
                 .map(|((down, at), _)| [at.x, at.y, f64::from(u8::from(*down))])
                 .collect(),
+            links: Vec::new(),
         });
     }
     (scene, Vec::new(), ticks)
@@ -569,8 +580,68 @@ impl ArenaJob {
                 output: asked.output.clone(),
                 rays: Vec::new(),
                 feet: Vec::new(),
+                links: Vec::new(),
             });
         }
         false
     }
+}
+
+/// Where the arm's joints and tool are at `q`, from the side (x, z).
+fn arm_points(model: &kinolab_mechanism::Model, q: &[f64]) -> Vec<[f64; 2]> {
+    model
+        .frame("tool")
+        .and_then(|tool| model.chain_in_plane(q, &tool, kinolab_mechanism::Plane::Side))
+        .unwrap_or_default()
+}
+
+fn arm(source: &str, t: &crate::arm::Trial) -> Recorded {
+    let target: Vec<f64> = t.target_deg.iter().map(|d| d.to_radians()).collect();
+    let Ok((model, run)) = crate::arm::simulate(source, t) else {
+        return (
+            Scene::Arm {
+                target: Vec::new(),
+                reach: 1.0,
+            },
+            Vec::new(),
+            Vec::new(),
+        );
+    };
+    let reach = 1.0;
+    let scene = Scene::Arm {
+        target: arm_points(&model, &target),
+        reach,
+    };
+    let deg = |v: &[f64]| {
+        let parts: Vec<String> = v.iter().map(|x| number(x.to_degrees())).collect();
+        format!("[{}]°", parts.join(", "))
+    };
+    let mut path = Vec::new();
+    let ticks = run
+        .samples
+        .iter()
+        .map(|s| {
+            let links = arm_points(&model, &s.q);
+            if let Some(tool) = links.last() {
+                path.push(*tool);
+            }
+            let torques: Vec<String> = s.tau.iter().map(|x| number(*x)).collect();
+            Tick {
+                t: s.t,
+                pose: [0.0, 0.0, 0.0],
+                given: given(&[
+                    ("q", deg(&s.q)),
+                    ("qd", format!("{} rad/s", deg(&s.qd).trim_end_matches('°'))),
+                    ("target", deg(&target)),
+                    ("payload", format!("{} kg", number(t.payload))),
+                ]),
+                returned: format!("[{}] N·m", torques.join(", ")),
+                output: Output::default(),
+                rays: Vec::new(),
+                feet: Vec::new(),
+                links,
+            }
+        })
+        .collect();
+    (scene, path, ticks)
 }

@@ -50,6 +50,10 @@ proptest! {
                 "sequencer-replan",
                 format!("fn next(state) {{ #{{ replan: {stance}, target: () }} }}"),
             ),
+            (
+                "arm-hold",
+                format!("fn control(q, qd, target, payload) {{ [{a} * 40.0, {b} * 10.0] }}"),
+            ),
         ];
         for (id, source) in cases {
             prop_assert!(!passes(id, &source), "{id} passed {source}");

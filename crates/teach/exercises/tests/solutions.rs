@@ -79,6 +79,22 @@ const CASES: &[(&str, &[(&str, &str)])] = &[
         ],
     ),
     (
+        "arm-hold",
+        &[
+            (
+                "pd",
+                "joint 1 was 18.8° below its target in the last second",
+            ),
+            ("wrong-sign", "below its target"),
+            (
+                "stiff",
+                "asked joint 1 for 3490.7 N·m at t = 0.00 s; the motors give at most 100 N·m",
+            ),
+            ("constant", "below its target"),
+            ("no-payload", "joint 2 was 7.9° below its target"),
+        ],
+    ),
+    (
         "behaviour-explore",
         &[
             ("straight", "touched an obstacle at"),
@@ -163,6 +179,11 @@ fn a_slow_loop() {
 }
 
 #[test]
+fn hold_an_arm() {
+    check_all("arm-hold");
+}
+
+#[test]
 fn explore() {
     check_all("behaviour-explore");
 }
@@ -225,6 +246,7 @@ fn every_world_of_every_exercise_is_built() {
     let expected = [
         ("control-park", 5),
         ("control-slow-loop", 3),
+        ("arm-hold", 5),
         ("behaviour-explore", 5),
         ("behaviour-coordinate", 5),
         ("field-pull", 5),

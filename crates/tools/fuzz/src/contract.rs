@@ -63,7 +63,7 @@ impl Verdict {
 
 /// Keys whose value may be `null` in an answer: "none" in the contract's
 /// sense (no time to goal, no ICR, no path), never a number that overflowed.
-pub const NULLABLE: [&str; 22] = [
+pub const NULLABLE: [&str; 23] = [
     "behaviour",
     // A joint without limits; a widget parameter with no default; a
     // straight drive's turn radius; a top-level group of bodies; a foot
@@ -85,6 +85,8 @@ pub const NULLABLE: [&str; 22] = [
     "time",
     "model_age_mean",
     "model_age_max",
+    // A mechanism with no two bodies far enough apart to measure.
+    "clearance",
     // A graded world that passed has no reason; a script that ran
     // cleanly no error (whose line, column and time may be unknown).
     "reason",

@@ -6,6 +6,7 @@ use std::f64::consts::FRAC_PI_2;
 use crate::dh::{Convention, DhRow, chain_builder, shift};
 use crate::error::FieldError;
 use crate::model::{JointKind, Model, ModelBuilder, Pose};
+use nalgebra::Vector3;
 
 fn revolute(name: &str, a: f64, alpha: f64, d: f64, offset: f64, limits_deg: [f64; 2]) -> DhRow {
     DhRow {
@@ -258,5 +259,59 @@ pub fn panda() -> Result<Model, FieldError> {
     }
     b.shape(rows.len() + 1, [0.0; 3], [0.0, 0.0, 0.107], 0.05);
     give_masses(&mut b, 1, &PANDA_MASSES)?;
+    b.build()
+}
+
+/// Rods `(length m, mass kg)` joined end to end, each turning about the
+/// horizontal y axis, so the chain moves in the vertical x–z plane with
+/// gravity along −z. At zero an arm points along +x, and a positive angle
+/// raises it; a `hanging` chain points down (−z) at zero. Each rod's mass
+/// is spread along it, with a little thickness; a `tool` frame sits at the
+/// last rod's end.
+pub fn vertical(name: &str, rods: &[(f64, f64)], hanging: bool) -> Result<Model, FieldError> {
+    let mut b = ModelBuilder::new(name);
+    let up = nalgebra::Unit::new_normalize(Vector3::new(0.0, -1.0, 0.0));
+    let along = |l: f64| {
+        if hanging {
+            Vector3::new(0.0, 0.0, -l)
+        } else {
+            Vector3::new(l, 0.0, 0.0)
+        }
+    };
+    let mut parent = 0;
+    let mut origin = Pose::identity();
+    for (i, &(length, mass)) in rods.iter().enumerate() {
+        let body = b.joint(
+            format!("joint{}", i + 1),
+            JointKind::Revolute,
+            parent,
+            origin,
+            up,
+            0.0,
+            Pose::identity(),
+            Some([-std::f64::consts::PI, std::f64::consts::PI]),
+        );
+        // A rod of radius 2 cm: m l²/12 across it, m r²/2 along it.
+        let across = mass * length * length / 12.0;
+        let about = mass * 0.02 * 0.02 / 2.0;
+        let c = along(length / 2.0);
+        let (ixx, izz) = if hanging {
+            (across, about)
+        } else {
+            (about, across)
+        };
+        let inertial = crate::Inertial::new(
+            &format!("joint{}", i + 1),
+            mass,
+            [c.x, c.y, c.z],
+            [ixx, 0.0, 0.0, across, 0.0, izz],
+        )?;
+        b.set_inertial(body, inertial);
+        let end = along(length);
+        b.shape(body, [0.0; 3], [end.x, end.y, end.z], 0.03);
+        origin = Pose::translation(end.x, end.y, end.z);
+        parent = body;
+    }
+    b.frame("tool", parent, origin);
     b.build()
 }

@@ -24,6 +24,21 @@ pub const CATALOGUE: &[(&str, &str, &str)] = &[
         "three revolute joints in a plane: position and heading of the hand",
     ),
     (
+        "vertical-2r",
+        "Two-link arm in a vertical plane",
+        "shoulder and elbow turning about horizontal axes, links of 0.5 m (3 kg) and 0.4 m (2 kg): gravity loads the joints",
+    ),
+    (
+        "vertical-3r",
+        "Three-link arm in a vertical plane",
+        "shoulder, elbow and wrist, links of 0.5 m (4 kg), 0.4 m (2.5 kg) and 0.15 m (1 kg)",
+    ),
+    (
+        "double-pendulum",
+        "Double pendulum",
+        "two rods of 0.5 m and 1 kg hanging one from the other, free to swing",
+    ),
+    (
         "puma560",
         "Puma 560",
         "the classic six-joint industrial arm, standard DH, on a 0.6718 m base",
@@ -96,6 +111,13 @@ pub fn mechanism(id: &str) -> Result<Model, FieldError> {
     match id {
         "planar-2r" => arms::planar(&[1.0, 0.8]),
         "planar-3r" => arms::planar(&[1.0, 0.8, 0.3]),
+        "vertical-2r" => arms::vertical("Two-link arm", &[(0.5, 3.0), (0.4, 2.0)], false),
+        "vertical-3r" => arms::vertical(
+            "Three-link arm",
+            &[(0.5, 4.0), (0.4, 2.5), (0.15, 1.0)],
+            false,
+        ),
+        "double-pendulum" => arms::vertical("Double pendulum", &[(0.5, 1.0), (0.5, 1.0)], true),
         "puma560" => arms::puma560(),
         "stanford" => arms::stanford(),
         "panda" => arms::panda(),

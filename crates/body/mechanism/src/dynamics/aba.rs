@@ -4,77 +4,109 @@
 //! coupled joints the tree has fewer freedoms than joints, and the same
 //! answer comes from the reduced mass matrix and a Cholesky solve.
 
-use nalgebra::{DMatrix, DVector, Matrix3, Matrix6, Vector3, Vector6};
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 
 use super::Dynamics;
-use super::spatial::{Link, Twist};
+use super::spatial::{Link, Twist, Wrench};
 use crate::error::FieldError;
 use crate::inertial::{Rigid, cross_matrix};
 use crate::model::Model;
 
-/// What the three passes keep: per body its articulated inertia, bias
-/// force and velocity-product acceleration; per joint U, D and u.
+/// A body's articulated inertia, the symmetric 6 × 6 matrix
+/// [[a, b], [bᵀ, c]] (angular rows first) kept as its three blocks: once
+/// the bodies beyond have been folded in it is no longer a rigid body's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Articulated {
+    a: Matrix3<f64>,
+    b: Matrix3<f64>,
+    c: Matrix3<f64>,
+}
+
+impl Articulated {
+    const ZERO: Articulated = Articulated {
+        a: Matrix3::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+        b: Matrix3::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+        c: Matrix3::new(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+    };
+
+    fn of(r: &Rigid) -> Articulated {
+        Articulated {
+            a: r.io,
+            b: cross_matrix(&r.h),
+            c: Matrix3::identity() * r.m,
+        }
+    }
+
+    /// The wrench this inertia gives a twist (a momentum, or with an
+    /// axis, the column U = I S).
+    #[inline]
+    fn times(&self, t: &Twist) -> Wrench {
+        Wrench {
+            n: self.a * t.w + self.b * t.v,
+            f: self.b.tr_mul(&t.w) + self.c * t.v,
+        }
+    }
+
+    /// I − U Uᵀ / d: what is left once the joint with column `u` is free.
+    #[inline]
+    fn release(&mut self, u: &Wrench, d: f64) {
+        let (n, f) = (u.n / d, u.f / d);
+        self.a -= n * u.n.transpose();
+        self.b -= n * u.f.transpose();
+        self.c -= f * u.f.transpose();
+    }
+
+    /// Xᵀ I X: the same inertia about the parent's origin, in its axes.
+    #[inline]
+    fn seen_in_parent(&self, l: &Link) -> Articulated {
+        let (r, rt) = (&l.r, l.r.transpose());
+        let a = r * self.a * rt;
+        let b = r * self.b * rt;
+        let c = r * self.c * rt;
+        let px = cross_matrix(&l.p);
+        let k = b * px;
+        Articulated {
+            a: a - k - k.transpose() - px * c * px,
+            b: b + px * c,
+            c,
+        }
+    }
+
+    fn add(&mut self, o: &Articulated) {
+        self.a += o.a;
+        self.b += o.b;
+        self.c += o.c;
+    }
+}
+
+/// What the three passes keep, per node: the articulated inertia, the
+/// bias force, the velocity-product acceleration, the acceleration, and
+/// the joint's U, D and u.
 #[derive(Debug, Clone)]
 pub(super) struct Scratch {
-    ia: Vec<Matrix6<f64>>,
-    pa: Vec<Vector6<f64>>,
-    c: Vec<Vector6<f64>>,
-    a: Vec<Vector6<f64>>,
-    u_vec: Vec<Vector6<f64>>,
+    ia: Vec<Articulated>,
+    pa: Vec<Wrench>,
+    c: Vec<Twist>,
+    a: Vec<Twist>,
+    u_vec: Vec<Wrench>,
     d: Vec<f64>,
     u: Vec<f64>,
     qdd: Vec<f64>,
 }
 
 impl Scratch {
-    pub fn new(bodies: usize, dof: usize) -> Self {
+    pub fn new(nodes: usize, dof: usize) -> Self {
         Self {
-            ia: vec![Matrix6::zeros(); bodies],
-            pa: vec![Vector6::zeros(); bodies],
-            c: vec![Vector6::zeros(); bodies],
-            a: vec![Vector6::zeros(); bodies],
-            u_vec: vec![Vector6::zeros(); bodies],
-            d: vec![0.0; bodies],
-            u: vec![0.0; bodies],
+            ia: vec![Articulated::ZERO; nodes],
+            pa: vec![Wrench::ZERO; nodes],
+            c: vec![Twist::ZERO; nodes],
+            a: vec![Twist::ZERO; nodes],
+            u_vec: vec![Wrench::ZERO; nodes],
+            d: vec![0.0; nodes],
+            u: vec![0.0; nodes],
             qdd: vec![0.0; dof],
         }
     }
-}
-
-fn six(t: &Twist) -> Vector6<f64> {
-    Vector6::new(t.w.x, t.w.y, t.w.z, t.v.x, t.v.y, t.v.z)
-}
-
-/// The body's spatial inertia as a 6 × 6 matrix (angular rows first).
-fn matrix(b: &Rigid) -> Matrix6<f64> {
-    let hx = cross_matrix(&b.h);
-    let mut m = Matrix6::zeros();
-    m.fixed_view_mut::<3, 3>(0, 0).copy_from(&b.io);
-    m.fixed_view_mut::<3, 3>(0, 3).copy_from(&hx);
-    m.fixed_view_mut::<3, 3>(3, 0).copy_from(&hx.transpose());
-    m.fixed_view_mut::<3, 3>(3, 3)
-        .copy_from(&(Matrix3::identity() * b.m));
-    m
-}
-
-/// The motion transform from parent to child: twist_child = X · twist_parent.
-fn motion_transform(l: &Link) -> Matrix6<f64> {
-    let rt = l.r.transpose();
-    let mut x = Matrix6::zeros();
-    x.fixed_view_mut::<3, 3>(0, 0).copy_from(&rt);
-    x.fixed_view_mut::<3, 3>(3, 3).copy_from(&rt);
-    x.fixed_view_mut::<3, 3>(3, 0)
-        .copy_from(&(-rt * cross_matrix(&l.p)));
-    x
-}
-
-/// v ×f w for six-vectors.
-fn cross_force(v: &Vector6<f64>, f: &Vector6<f64>) -> Vector6<f64> {
-    let (w, lin) = (v.fixed_rows::<3>(0), v.fixed_rows::<3>(3));
-    let (n, force) = (f.fixed_rows::<3>(0), f.fixed_rows::<3>(3));
-    let top = w.cross(&n) + lin.cross(&force);
-    let bottom = w.cross(&force);
-    Vector6::new(top.x, top.y, top.z, bottom.x, bottom.y, bottom.z)
 }
 
 impl Model {
@@ -119,63 +151,52 @@ impl Model {
 
     fn aba(&self, work: &mut Dynamics, tau: &[f64], gravity: [f64; 3]) -> Result<(), FieldError> {
         let s = &mut work.aba;
-        work.v[0] = Twist::ZERO;
-        for (i, j) in self.joints.iter().enumerate() {
-            let c = j.child;
-            let mut v = work.links[i].seen_in_child(&work.v[j.parent]);
-            let mut bias = Twist::ZERO;
-            if let Some(k) = self.variable_of[i] {
-                let vj = work.axes[i].scaled(work.qd[k]);
-                v = v.plus(&vj);
-                bias = v.cross(&vj);
-            }
-            work.v[c] = v;
-            s.c[c] = six(&bias);
-            s.ia[c] = matrix(&self.rigid[c]);
-            let momentum = s.ia[c] * six(&v);
-            s.pa[c] = cross_force(&six(&v), &momentum);
+        let nodes = &self.tree.nodes;
+        for (i, node) in nodes.iter().enumerate() {
+            let pv = node.parent.map_or(Twist::ZERO, |p| work.v[p]);
+            let vj = node.axis.scaled(work.qd[node.variable]);
+            let v = work.links[i].seen_in_child(&pv).plus(&vj);
+            work.v[i] = v;
+            s.c[i] = v.cross(&vj);
+            s.ia[i] = Articulated::of(&node.rigid);
+            s.pa[i] = v.cross_wrench(&node.rigid.times(&v));
         }
-        for (i, j) in self.joints.iter().enumerate().rev() {
-            let c = j.child;
-            let (mut ia, mut pa) = (s.ia[c], s.pa[c]);
-            if let Some(k) = self.variable_of[i] {
-                let axis = six(&work.axes[i]);
-                let u_vec = ia * axis;
-                let d = axis.dot(&u_vec);
-                if d.abs() < 1e-12 {
-                    return Err(FieldError::new(
-                        "model",
-                        format!(
-                            "nothing beyond joint `{}` has mass: no torque can accelerate it",
-                            j.name
-                        ),
-                    ));
-                }
-                let u = tau[k] - axis.dot(&pa);
-                ia -= u_vec * u_vec.transpose() / d;
-                pa += u_vec * (u / d);
-                s.u_vec[c] = u_vec;
-                s.d[c] = d;
-                s.u[c] = u;
+        for (i, node) in nodes.iter().enumerate().rev() {
+            let (mut ia, mut pa) = (s.ia[i], s.pa[i]);
+            let u_vec = ia.times(&node.axis);
+            let d = node.axis.dot(&u_vec);
+            if d.abs() < 1e-12 {
+                return Err(FieldError::new(
+                    "model",
+                    format!(
+                        "nothing beyond joint `{}` has mass: no torque can accelerate it",
+                        self.joints[node.joint].name
+                    ),
+                ));
             }
-            pa += ia * s.c[c];
-            if j.parent != 0 {
-                let x = motion_transform(&work.links[i]);
-                s.ia[j.parent] += x.transpose() * ia * x;
-                s.pa[j.parent] += x.transpose() * pa;
+            let u = tau[node.variable] - node.axis.dot(&pa);
+            ia.release(&u_vec, d);
+            pa.add(&scaled(&u_vec, u / d));
+            pa.add(&ia.times(&s.c[i]));
+            (s.u_vec[i], s.d[i], s.u[i]) = (u_vec, d, u);
+            if let Some(p) = node.parent {
+                let link = &work.links[i];
+                let up = ia.seen_in_parent(link);
+                s.ia[p].add(&up);
+                let up = link.seen_in_parent(&pa);
+                s.pa[p].add(&up);
             }
         }
-        s.a[0] = vec_root(gravity);
-        for (i, j) in self.joints.iter().enumerate() {
-            let c = j.child;
-            let mut acc = motion_transform(&work.links[i]) * s.a[j.parent] + s.c[c];
-            if let Some(k) = self.variable_of[i] {
-                let axis = six(&work.axes[i]);
-                let qdd = (s.u[c] - s.u_vec[c].dot(&acc)) / s.d[c];
-                s.qdd[k] = qdd;
-                acc += axis * qdd;
-            }
-            s.a[c] = acc;
+        let root = Twist {
+            w: Vector3::zeros(),
+            v: -Vector3::from(gravity),
+        };
+        for (i, node) in nodes.iter().enumerate() {
+            let pa = node.parent.map_or(root, |p| s.a[p]);
+            let acc = work.links[i].seen_in_child(&pa).plus(&s.c[i]);
+            let qdd = (s.u[i] - acc.dot(&s.u_vec[i])) / s.d[i];
+            s.qdd[node.variable] = qdd;
+            s.a[i] = acc.plus(&node.axis.scaled(qdd));
         }
         Ok(())
     }
@@ -211,8 +232,9 @@ impl Model {
     }
 }
 
-/// The root's acceleration: upwards, against gravity.
-fn vec_root(gravity: [f64; 3]) -> Vector6<f64> {
-    let g = -Vector3::from(gravity);
-    Vector6::new(0.0, 0.0, 0.0, g.x, g.y, g.z)
+fn scaled(w: &Wrench, k: f64) -> Wrench {
+    Wrench {
+        n: w.n * k,
+        f: w.f * k,
+    }
 }

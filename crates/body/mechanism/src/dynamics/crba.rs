@@ -5,6 +5,8 @@
 use nalgebra::DMatrix;
 
 use super::Dynamics;
+use super::spatial::{Link, Twist};
+use super::tree::{Move, Node};
 use crate::error::FieldError;
 use crate::model::Model;
 
@@ -28,34 +30,45 @@ impl Model {
         self.mass_matrix_in(&mut work, q).cloned()
     }
 
-    /// M for the links in `work` (placed for the state).
+    /// M for the links in `work` (placed for the state). Everything is
+    /// taken to the root frame first, so each entry is one product: joint
+    /// j's axis against the wrench that joint i's composite body needs to
+    /// move along its own axis (the form Pinocchio's CRBA takes).
     pub(super) fn crba(&self, work: &mut Dynamics) {
-        work.crba.copy_from_slice(&self.rigid);
-        for (i, j) in self.joints.iter().enumerate().rev() {
-            if j.parent != 0 {
-                let link = &work.links[i];
-                let up = work.crba[j.child].seen_in_parent(&link.r, &link.p);
-                work.crba[j.parent].add(&up);
+        let nodes = &self.tree.nodes;
+        for (i, node) in nodes.iter().enumerate() {
+            let local = &work.links[i];
+            let world = match node.parent {
+                Some(p) => work.world[p].then(local),
+                None => *local,
+            };
+            work.world[i] = world;
+            work.crba[i] = node.rigid.seen_in_parent(&world.r, &world.p);
+            work.v[i] = axis_in_root(node, &world);
+        }
+        let count = nodes.len();
+        // Slices of the tree's length let the compiler drop most bounds checks.
+        let (composite, axes) = (&mut work.crba[..count], &work.v[..count]);
+        for (i, node) in nodes.iter().enumerate().rev() {
+            if let Some(p) = node.parent {
+                let beyond = composite[i];
+                composite[p].add(&beyond);
             }
         }
-        work.mass.fill(0.0);
-        for (i, j) in self.joints.iter().enumerate() {
-            let Some(k) = self.variable_of[i] else {
-                continue;
-            };
-            let s = work.axes[i];
-            let mut f = work.crba[j.child].times(&s);
-            work.mass[(k, k)] = s.dot(&f);
-            // Up the chain: the same wrench, seen by each joint above.
-            let mut below = i;
-            while let Some(above) = self.parent_joint[self.joints[below].parent] {
-                f = work.links[below].seen_in_parent(&f);
-                if let Some(m) = self.variable_of[above] {
-                    let entry = work.axes[above].dot(&f);
-                    work.mass[(k, m)] = entry;
-                    work.mass[(m, k)] = entry;
-                }
-                below = above;
+        let n = self.dof();
+        let mass = work.mass.as_mut_slice();
+        mass.fill(0.0);
+        for (i, node) in nodes.iter().enumerate() {
+            let k = node.variable;
+            let f = composite[i].times(&axes[i]);
+            mass[k * n + k] = axes[i].dot(&f);
+            let mut above = node.parent;
+            while let Some(a) = above {
+                let m = nodes[a].variable;
+                let entry = axes[a].dot(&f);
+                mass[k * n + m] = entry;
+                mass[m * n + k] = entry;
+                above = nodes[a].parent;
             }
         }
         for c in &self.couplings {
@@ -68,5 +81,21 @@ impl Model {
                 work.mass[(c.follower, col)] = 0.0;
             }
         }
+    }
+}
+
+/// A node's unit motion in the root frame, where its frame sits at
+/// `world`. About a coordinate axis, that is a column of the rotation.
+#[inline]
+fn axis_in_root(node: &Node, world: &Link) -> Twist {
+    match node.motion {
+        Move::Turn(axis) => {
+            let w = world.r.column(axis.index()).into_owned();
+            Twist {
+                w,
+                v: world.p.cross(&w),
+            }
+        }
+        _ => world.twist_in_parent(&node.axis),
     }
 }

@@ -21,27 +21,29 @@
 mod aba;
 mod crba;
 pub mod motion;
+pub mod servo;
 mod spatial;
 pub mod statics;
+pub(crate) mod tree;
 
-use nalgebra::{DMatrix, Matrix3, Rotation3, Vector3};
+use nalgebra::{DMatrix, Vector3};
 
 use crate::error::FieldError;
-use crate::model::{JointKind, Model};
+use crate::model::Model;
 use spatial::{Link, Twist, Wrench};
 
 /// Gravity at the Earth's surface in the root frame, m/s², z up.
 pub const EARTH: [f64; 3] = [0.0, 0.0, -9.81];
 
 /// Scratch space for one model's dynamics, kept by whoever asks (in the
-/// spirit of Pinocchio's `Data`).
+/// spirit of Pinocchio's `Data`); one entry per node of the model's tree.
 #[derive(Debug, Clone)]
 pub struct Dynamics {
-    /// Each joint's child frame in its parent's, this state.
+    /// Each node's frame in its parent's, this state.
     links: Vec<Link>,
-    /// Each joint's motion in its child's frame (constant).
-    axes: Vec<Twist>,
-    /// Per body: velocity, acceleration, force.
+    /// Each node's frame in the root's (the mass matrix works there).
+    world: Vec<Link>,
+    /// Per node: velocity, acceleration, force.
     v: Vec<Twist>,
     a: Vec<Twist>,
     f: Vec<Wrench>,
@@ -58,25 +60,19 @@ impl Model {
     /// A workspace for this model's dynamics.
     pub fn dynamics(&self) -> Dynamics {
         let n = self.dof();
-        let bodies = self.bodies.len();
+        let nodes = self.tree.len();
         Dynamics {
-            links: vec![
-                Link {
-                    r: Matrix3::identity(),
-                    p: Vector3::zeros()
-                };
-                self.joints.len()
-            ],
-            axes: self.joints.iter().map(axis_in_child).collect(),
-            v: vec![Twist::ZERO; bodies],
-            a: vec![Twist::ZERO; bodies],
-            f: vec![Wrench::ZERO; bodies],
+            links: vec![Link::IDENTITY; nodes],
+            world: vec![Link::IDENTITY; nodes],
+            v: vec![Twist::ZERO; nodes],
+            a: vec![Twist::ZERO; nodes],
+            f: vec![Wrench::ZERO; nodes],
             qd: vec![0.0; n],
             qdd: vec![0.0; n],
             tau: vec![0.0; n],
             mass: DMatrix::zeros(n, n),
-            aba: aba::Scratch::new(bodies, n),
-            crba: vec![crate::inertial::Rigid::ZERO; bodies],
+            aba: aba::Scratch::new(nodes, n),
+            crba: vec![crate::inertial::Rigid::ZERO; nodes],
         }
     }
 
@@ -140,25 +136,10 @@ impl Model {
         self.gravity_in(&mut work, q, gravity).map(<[f64]>::to_vec)
     }
 
-    /// Every joint's child frame in its parent's at state `q`.
+    /// Every node's frame in its parent's at state `q`.
     fn place_links(&self, work: &mut Dynamics, q: &[f64]) {
-        for (i, j) in self.joints.iter().enumerate() {
-            let value = self.variable_of[i].map_or(0.0, |v| q[v]) + j.offset;
-            let (rm, tm) = match j.kind {
-                JointKind::Revolute | JointKind::Continuous => (
-                    *Rotation3::from_axis_angle(&j.axis, value).matrix(),
-                    Vector3::zeros(),
-                ),
-                JointKind::Prismatic => (Matrix3::identity(), j.axis.into_inner() * value),
-                JointKind::Fixed => (Matrix3::identity(), Vector3::zeros()),
-            };
-            let (ro, po) = rotation_and_shift(&j.origin);
-            let (rp, pp) = rotation_and_shift(&j.post);
-            let r_joint = ro * rm;
-            work.links[i] = Link {
-                r: r_joint * rp,
-                p: po + ro * tm + r_joint * pp,
-            };
+        for (link, node) in work.links.iter_mut().zip(&self.tree.nodes) {
+            *link = node.link(q[node.variable]);
         }
     }
 
@@ -166,41 +147,37 @@ impl Model {
     /// with `moving` false, only gravity (velocities and accelerations 0).
     fn rnea(&self, work: &mut Dynamics, gravity: [f64; 3], moving: bool) {
         // The root accelerates upwards: gravity, felt by every body.
-        work.v[0] = Twist::ZERO;
-        work.a[0] = Twist {
+        let root = Twist {
             w: Vector3::zeros(),
             v: -Vector3::from(gravity),
         };
-        for (i, j) in self.joints.iter().enumerate() {
-            let (p, c) = (j.parent, j.child);
-            let link = work.links[i];
-            let mut v = link.seen_in_child(&work.v[p]);
-            let mut a = link.seen_in_child(&work.a[p]);
-            if let Some(k) = self.variable_of[i]
-                && moving
-            {
-                let s = work.axes[i];
-                let vj = s.scaled(work.qd[k]);
-                v = v.plus(&vj);
-                a = a.plus(&s.scaled(work.qdd[k])).plus(&v.cross(&vj));
-            }
-            let body = &self.rigid[c];
-            let mut f = body.times(&a);
-            if moving {
-                f.add(&v.cross_wrench(&body.times(&v)));
-            }
-            work.v[c] = v;
-            work.a[c] = a;
-            work.f[c] = f;
+        for (i, node) in self.tree.nodes.iter().enumerate() {
+            let link = &work.links[i];
+            let (pv, pa) = node
+                .parent
+                .map_or((Twist::ZERO, root), |p| (work.v[p], work.a[p]));
+            let mut a = link.seen_in_child(&pa);
+            let f = if moving {
+                let vj = node.axis.scaled(work.qd[node.variable]);
+                let v = link.seen_in_child(&pv).plus(&vj);
+                a = a
+                    .plus(&node.axis.scaled(work.qdd[node.variable]))
+                    .plus(&v.cross(&vj));
+                work.v[i] = v;
+                let mut f = node.rigid.times(&a);
+                f.add(&v.cross_wrench(&node.rigid.times(&v)));
+                f
+            } else {
+                node.rigid.times(&a)
+            };
+            work.a[i] = a;
+            work.f[i] = f;
         }
         work.tau.fill(0.0);
-        for (i, j) in self.joints.iter().enumerate().rev() {
-            let (p, c) = (j.parent, j.child);
-            if let Some(k) = self.variable_of[i] {
-                work.tau[k] = work.axes[i].dot(&work.f[c]);
-            }
-            if p != 0 {
-                let up = work.links[i].seen_in_parent(&work.f[c]);
+        for (i, node) in self.tree.nodes.iter().enumerate().rev() {
+            work.tau[node.variable] = node.axis.dot(&work.f[i]);
+            if let Some(p) = node.parent {
+                let up = work.links[i].seen_in_parent(&work.f[i]);
                 work.f[p].add(&up);
             }
         }
@@ -240,10 +217,7 @@ impl Model {
                 ),
             ));
         }
-        for (i, g) in gravity.iter().enumerate() {
-            crate::error::finite(format!("gravity[{i}]"), *g)?;
-        }
-        Ok(())
+        crate::error::all_finite("gravity", &gravity)
     }
 
     fn check_rates(&self, field: &str, rates: &[f64]) -> Result<(), FieldError> {
@@ -253,38 +227,6 @@ impl Model {
                 format!("{} values for {} joint variables", rates.len(), self.dof()),
             ));
         }
-        for (i, r) in rates.iter().enumerate() {
-            crate::error::finite(format!("{field}[{i}]"), *r)?;
-        }
-        Ok(())
-    }
-}
-
-/// A pose's rotation as a matrix, and its shift.
-#[inline]
-fn rotation_and_shift(pose: &crate::Pose) -> (Matrix3<f64>, Vector3<f64>) {
-    (
-        *pose.rotation.to_rotation_matrix().matrix(),
-        pose.translation.vector,
-    )
-}
-
-/// A joint's unit motion in its child's frame: the joint turns about (or
-/// slides along) its axis in the joint frame, and the child's frame is the
-/// joint frame moved by `post`.
-fn axis_in_child(j: &crate::Joint) -> Twist {
-    let (rp, pp) = rotation_and_shift(&j.post);
-    let a = j.axis.into_inner();
-    let rt = rp.transpose();
-    match j.kind {
-        JointKind::Revolute | JointKind::Continuous => Twist {
-            w: rt * a,
-            v: rt * a.cross(&pp),
-        },
-        JointKind::Prismatic => Twist {
-            w: Vector3::zeros(),
-            v: rt * a,
-        },
-        JointKind::Fixed => Twist::ZERO,
+        crate::error::all_finite(field, rates)
     }
 }

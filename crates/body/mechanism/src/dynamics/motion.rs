@@ -46,6 +46,10 @@ pub struct Falling {
     pub now: Instant,
     /// The energy at the start, J.
     pub start_energy: f64,
+    /// What the energy is measured against: the arm's weight times how
+    /// far out its furthest mass starts, J (an energy of 0 at the start
+    /// must not make every change infinite).
+    scale: f64,
     steps: usize,
 }
 
@@ -70,6 +74,20 @@ impl Model {
         self.check_rates("qd", qd)?;
         let mut work = self.dynamics();
         let energy = self.energy(&mut work, q, qd, release.gravity);
+        let placed = self.place(q)?;
+        let (mut mass, mut far) = (0.0, 0.0_f64);
+        for (b, body) in self.bodies.iter().enumerate() {
+            if let Some(i) = body.inertial {
+                mass += i.mass;
+                far = far.max(
+                    placed.bodies[b]
+                        .transform_point(&i.com.into())
+                        .coords
+                        .norm(),
+                );
+            }
+        }
+        let scale = (mass * Vector3::from(release.gravity).norm() * far).max(energy.abs());
         Ok(Falling {
             work,
             release,
@@ -80,6 +98,7 @@ impl Model {
                 energy,
             },
             start_energy: energy,
+            scale,
             steps: 0,
         })
     }
@@ -91,8 +110,8 @@ impl Model {
         self.place_links(work, q);
         // Velocities only: the pass out of the recursion, without gravity.
         self.rnea(work, [0.0; 3], true);
-        let kinetic: f64 = (1..self.bodies.len())
-            .map(|b| 0.5 * work.v[b].dot(&self.rigid[b].times(&work.v[b])))
+        let kinetic: f64 = (self.tree.nodes.iter().zip(&work.v))
+            .map(|(node, v)| 0.5 * v.dot(&node.rigid.times(v)))
             .sum();
         let g = Vector3::from(gravity);
         let potential = match self.place(q) {
@@ -119,28 +138,16 @@ impl Falling {
             return Ok(false);
         }
         let r = self.release;
-        let (q, qd) = (self.now.q.clone(), self.now.qd.clone());
-        let mut rate = |q: &[f64], qd: &[f64]| -> Result<Vec<f64>, FieldError> {
-            let tau: Vec<f64> = qd.iter().map(|v| -r.damping * v).collect();
-            m.forward_dynamics_in(&mut self.work, q, qd, &tau, r.gravity)
-                .map(<[f64]>::to_vec)
-        };
-        let along = |x: &[f64], k: &[f64], h: f64| -> Vec<f64> {
-            x.iter().zip(k).map(|(a, b)| a + h * b).collect()
-        };
-        let h = r.dt;
-        let a1 = rate(&q, &qd)?;
-        let (q2, v2) = (along(&q, &qd, h / 2.0), along(&qd, &a1, h / 2.0));
-        let a2 = rate(&q2, &v2)?;
-        let (q3, v3) = (along(&q, &v2, h / 2.0), along(&qd, &a2, h / 2.0));
-        let a3 = rate(&q3, &v3)?;
-        let (q4, v4) = (along(&q, &v3, h), along(&qd, &a3, h));
-        let a4 = rate(&q4, &v4)?;
-        for k in 0..q.len() {
-            self.now.q[k] = q[k] + h / 6.0 * (qd[k] + 2.0 * v2[k] + 2.0 * v3[k] + v4[k]);
-            self.now.qd[k] = qd[k] + h / 6.0 * (a1[k] + 2.0 * a2[k] + 2.0 * a3[k] + a4[k]);
-        }
-        m.apply_couplings(&mut self.now.q);
+        let damping = |qd: &[f64]| -> Vec<f64> { qd.iter().map(|v| -r.damping * v).collect() };
+        rk4(
+            m,
+            &mut self.work,
+            &mut self.now.q,
+            &mut self.now.qd,
+            r.dt,
+            r.gravity,
+            &damping,
+        )?;
         self.now.t += r.dt;
         self.now.energy = m.energy(&mut self.work, &self.now.q, &self.now.qd, r.gravity);
         self.steps += 1;
@@ -148,9 +155,44 @@ impl Falling {
     }
 
     /// How far the energy has strayed from the start, relative to the
-    /// larger of the start energy and the energy now.
+    /// arm's weight times how far out its furthest mass started (or the
+    /// start energy, when that is larger).
     pub fn drift(&self) -> f64 {
-        let scale = self.start_energy.abs().max(self.now.energy.abs()).max(1e-9);
-        (self.now.energy - self.start_energy).abs() / scale
+        (self.now.energy - self.start_energy).abs() / self.scale.max(1e-9)
     }
+}
+
+/// One Runge–Kutta step of `h` seconds: `q` and `qd` move as the arm's
+/// dynamics under `gravity` and the joint torques `torque(q̇)` make them.
+pub(crate) fn rk4(
+    m: &Model,
+    work: &mut Dynamics,
+    q: &mut [f64],
+    qd: &mut [f64],
+    h: f64,
+    gravity: [f64; 3],
+    torque: &dyn Fn(&[f64]) -> Vec<f64>,
+) -> Result<(), FieldError> {
+    let mut rate = |q: &[f64], qd: &[f64]| -> Result<Vec<f64>, FieldError> {
+        m.forward_dynamics_in(work, q, qd, &torque(qd), gravity)
+            .map(<[f64]>::to_vec)
+    };
+    let along = |x: &[f64], k: &[f64], h: f64| -> Vec<f64> {
+        x.iter().zip(k).map(|(a, b)| a + h * b).collect()
+    };
+    let a1 = rate(q, qd)?;
+    let (q2, v2) = (along(q, qd, h / 2.0), along(qd, &a1, h / 2.0));
+    let a2 = rate(&q2, &v2)?;
+    let (q3, v3) = (along(q, &v2, h / 2.0), along(qd, &a2, h / 2.0));
+    let a3 = rate(&q3, &v3)?;
+    let (q4, v4) = (along(q, &v3, h), along(qd, &a3, h));
+    let a4 = rate(&q4, &v4)?;
+    let q0: Vec<f64> = q.to_vec();
+    let qd0: Vec<f64> = qd.to_vec();
+    for k in 0..q.len() {
+        q[k] = q0[k] + h / 6.0 * (qd0[k] + 2.0 * v2[k] + 2.0 * v3[k] + v4[k]);
+        qd[k] = qd0[k] + h / 6.0 * (a1[k] + 2.0 * a2[k] + 2.0 * a3[k] + a4[k]);
+    }
+    m.apply_couplings(q);
+    Ok(())
 }

@@ -91,13 +91,37 @@ impl Wrench {
 }
 
 impl Link {
+    pub const IDENTITY: Link = Link {
+        r: Matrix3::new(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0),
+        p: Vector3::new(0.0, 0.0, 0.0),
+    };
+
+    /// This frame followed by `next` (a frame given in this one).
+    #[inline]
+    pub fn then(&self, next: &Link) -> Link {
+        Link {
+            r: self.r * next.r,
+            p: self.p + self.r * next.p,
+        }
+    }
+
+    /// A child's twist seen in the parent's frame (the inverse of
+    /// [`Link::seen_in_child`]).
+    #[inline]
+    pub fn twist_in_parent(&self, t: &Twist) -> Twist {
+        let w = self.r * t.w;
+        Twist {
+            w,
+            v: self.r * t.v + self.p.cross(&w),
+        }
+    }
+
     /// A parent's twist seen in the child's frame.
     #[inline]
     pub fn seen_in_child(&self, t: &Twist) -> Twist {
-        let rt = self.r.transpose();
         Twist {
-            w: rt * t.w,
-            v: rt * (t.v + t.w.cross(&self.p)),
+            w: self.r.tr_mul(&t.w),
+            v: self.r.tr_mul(&(t.v + t.w.cross(&self.p))),
         }
     }
 

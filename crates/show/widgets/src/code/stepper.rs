@@ -115,6 +115,7 @@ fn area(state: &Stepping) -> ([f64; 2], [f64; 2]) {
             [w.bounds.x_max, w.bounds.y_max],
         ),
         Scene::Legs { .. } => ([-0.35, -0.3], [0.35, 0.3]),
+        Scene::Arm { reach, .. } => ([-reach - 0.1, -reach - 0.1], [reach + 0.1, reach + 0.1]),
     }
 }
 
@@ -184,6 +185,19 @@ fn scene(ui: &mut egui::Ui, state: &Stepping, width: f32) {
             }
         }
         Scene::Legs { com } => legs(&painter, &view, tick, *com, ink, accent),
+        Scene::Arm { target, .. } => {
+            let ground = [view.to_screen([-1.2, 0.0]), view.to_screen([1.2, 0.0])];
+            painter.line_segment(ground, Stroke::new(1.0, ui.visuals().weak_text_color()));
+            draw_chain(
+                &painter,
+                &view,
+                target,
+                Stroke::new(2.0, theme::good_color(ui).gamma_multiply(0.6)),
+            );
+            if let Some(k) = tick {
+                draw_chain(&painter, &view, &k.links, Stroke::new(6.0, accent));
+            }
+        }
     }
     let shown = t.path.len().min(path_upto(state));
     draw_trail(
@@ -194,7 +208,7 @@ fn scene(ui: &mut egui::Ui, state: &Stepping, width: f32) {
     );
     draw_trail(&painter, &view, t.path[..shown].iter().copied(), accent);
     if let Some(k) = tick
-        && !matches!(t.scene, Scene::Legs { .. })
+        && !matches!(t.scene, Scene::Legs { .. } | Scene::Arm { .. })
     {
         let pose = Pose::new(k.pose[0], k.pose[1], k.pose[2]);
         for [angle, range] in &k.rays {
@@ -372,5 +386,17 @@ fn draw_outline(painter: &egui::Painter, view: &PlaneView, outline: &Outline, in
                 Stroke::new(width, stroke.color),
             );
         }
+    }
+}
+
+/// An arm seen from the side: its links from the shoulder (at the origin)
+/// through each joint to the tool, joints as rings.
+fn draw_chain(painter: &egui::Painter, view: &PlaneView, points: &[[f64; 2]], stroke: Stroke) {
+    let mut at = view.to_screen([0.0, 0.0]);
+    for p in points {
+        let next = view.to_screen(*p);
+        painter.line_segment([at, next], stroke);
+        painter.circle_stroke(at, stroke.width * 0.8 + 2.0, Stroke::new(1.5, stroke.color));
+        at = next;
     }
 }

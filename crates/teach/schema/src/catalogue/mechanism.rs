@@ -143,6 +143,97 @@ pub(crate) static WIDGETS: &[WidgetSchema] = &[
         ],
         rules: Some(dh_rules),
     },
+    WidgetSchema {
+        name: "arm-statics",
+        summary: "an arm in a vertical plane held still: each joint's torque as a bar as you drag the pose, a payload at the tool, the pose that needs least torque, springy joints and the sag",
+        params: &[
+            param(
+                "model",
+                Kind::Choice {
+                    options: &["vertical-2r", "vertical-3r"],
+                },
+                Some("vertical-3r"),
+                "the arm: two or three links in a vertical plane",
+            ),
+            param(
+                "q",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: 3,
+                    min: -180.0,
+                    max: 180.0,
+                },
+                None,
+                "the joints to start from, degrees (0 is level, up is positive)",
+            ),
+            param(
+                "payload",
+                Kind::Number {
+                    min: 0.0,
+                    max: 10.0,
+                },
+                Some("1"),
+                "the mass at the tool, kg",
+            ),
+            param(
+                "stiffness",
+                Kind::Number {
+                    min: 100.0,
+                    max: 50000.0,
+                },
+                None,
+                "every joint's stiffness, N·m/rad (rigid joints when left out)",
+            ),
+            param(
+                "exaggerate",
+                YES_NO,
+                Some("yes"),
+                "draw the sag larger than it is (the true millimetres are printed)",
+            ),
+        ],
+        rules: None,
+    },
+    WidgetSchema {
+        name: "arm-fall",
+        summary: "an arm let go under gravity: its forward dynamics played step by step, its energy plotted, damping, and how far the integrator's energy strays at two step sizes",
+        params: &[
+            param(
+                "model",
+                Kind::Choice {
+                    options: &["double-pendulum", "vertical-2r", "vertical-3r"],
+                },
+                Some("double-pendulum"),
+                "the arm that falls",
+            ),
+            param(
+                "q",
+                Kind::Numbers {
+                    min_count: 1,
+                    max_count: 3,
+                    min: -180.0,
+                    max: 180.0,
+                },
+                None,
+                "where the joints start, degrees",
+            ),
+            param(
+                "damping",
+                Kind::Number { min: 0.0, max: 2.0 },
+                Some("0"),
+                "viscous damping at every joint, N·m·s/rad",
+            ),
+            param(
+                "step",
+                Kind::Number {
+                    min: 0.5,
+                    max: 50.0,
+                },
+                Some("10"),
+                "the integration step, ms",
+            ),
+        ],
+        rules: None,
+    },
 ];
 
 /// `a, alpha_deg, d, theta_deg`, with a and d within ±2 m (angles are
