@@ -43,7 +43,8 @@ pub use ik::{Goal, Options, Solution, Target};
 pub use inertial::Inertial;
 pub use kinematics::{Placement, Workspace};
 pub use model::{
-    Body, Frame, FrameRef, Joint, JointKind, MAX_JOINTS, Model, ModelBuilder, Pose, WORLD,
+    Body, Frame, FrameRef, Joint, JointKind, MAX_JOINTS, Model, ModelBuilder, OutsideLimit, Pose,
+    WORLD,
 };
 pub use nalgebra::{Matrix4, UnitQuaternion, Vector3};
 pub use shapes::{Collisions, Obstacle, Part, Plane, Shape};

@@ -10,6 +10,18 @@ use crate::compose::{Coupling, Group, LoopClosure, PendingCoupling, PendingLoop}
 use crate::error::FieldError;
 use crate::shapes::Shape;
 
+/// How far past a limit a value may be and still count as on it (a limit
+/// printed with fewer digits than the value).
+const LIMIT_SLACK: f64 = 1e-9;
+
+/// A joint whose value lies outside its limits.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OutsideLimit {
+    pub joint: String,
+    pub value: f64,
+    pub limits: [f64; 2],
+}
+
 /// A rigid transform: rotation and translation.
 pub type Pose = Isometry3<f64>;
 
@@ -510,6 +522,29 @@ impl Model {
             .map_or(WORLD, |(_, body)| body.name.as_str())
     }
 
+    /// The link a learner would grab to move the robot: of the links that
+    /// the most independent revolute joints turn, the one nearest the
+    /// root. A gripper's prismatic fingers, a mimic finger or a flange
+    /// bolted on beyond it does not count, so a humanoid's hand is its
+    /// wrist, not a fingertip. The world when nothing turns.
+    pub fn hand(&self) -> &str {
+        let turning = |b: usize| {
+            let chain = &self.chains[b];
+            let count = chain
+                .iter()
+                .filter(|&&j| {
+                    self.joints[j].kind == JointKind::Revolute
+                        && self.variable_of[j].is_some_and(|v| self.is_driven(v))
+                })
+                .count();
+            (count, std::cmp::Reverse(chain.len()), std::cmp::Reverse(b))
+        };
+        (0..self.bodies.len())
+            .max_by_key(|&b| turning(b))
+            .filter(|&b| turning(b).0 > 0)
+            .map_or(WORLD, |b| self.bodies[b].name.as_str())
+    }
+
     /// Number of joint variables (the state's length).
     pub fn dof(&self) -> usize {
         self.variables.len()
@@ -540,6 +575,33 @@ impl Model {
             "frame",
             format!("no frame named `{name}` (known: {})", known.join(", ")),
         ))
+    }
+
+    /// The joints whose values in state `q` lie outside their limits, in
+    /// joint order. Kinematics and dynamics compute such states all the
+    /// same; IK and the lab's sliders keep inside.
+    pub fn outside_limits(&self, q: &[f64]) -> Vec<OutsideLimit> {
+        self.joints
+            .iter()
+            .enumerate()
+            .filter_map(|(j, joint)| {
+                let value = *q.get(self.variable_of[j]?)?;
+                let [lo, hi] = joint.limits?;
+                let inside = (lo - LIMIT_SLACK..=hi + LIMIT_SLACK).contains(&value);
+                (!inside).then(|| OutsideLimit {
+                    joint: joint.name.clone(),
+                    value,
+                    limits: [lo, hi],
+                })
+            })
+            .collect()
+    }
+
+    /// All zeros with couplings applied: the state `--set` starts from.
+    pub fn zeros(&self) -> Vec<f64> {
+        let mut q = vec![0.0; self.dof()];
+        self.apply_couplings(&mut q);
+        q
     }
 
     /// Joint values inside every limit, all zero where zero is allowed,

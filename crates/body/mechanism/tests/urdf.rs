@@ -104,17 +104,40 @@ fn the_driven_joints_are_the_moving_non_mimic_joints_in_file_order() {
 }
 
 #[test]
-fn values_outside_a_limit_or_unknown_names_are_refused() {
+fn values_outside_a_limit_are_computed_and_named_unknown_names_refused() {
     let panda = urdf::read(&robot_file("panda")).expect("reads");
-    let far = panda.state(&[0.0, 3.0, 0.0, -1.0, 0.0, 1.0, 0.0, 0.0]);
-    let e = far.expect_err("panda_joint2 stops at 1.7628");
-    assert_eq!(e.field, "panda_joint2", "{e}");
+    let far = panda
+        .state(&[0.0, 3.0, 0.0, -1.0, 0.0, 1.0, 0.0, 0.0])
+        .expect("FK is geometry: any finite value");
+    let outside = panda.model.outside_limits(&far);
+    assert_eq!(outside.len(), 1, "{outside:?}");
+    assert_eq!(outside[0].joint, "panda_joint2");
+    assert_eq!(
+        (outside[0].value, outside[0].limits),
+        (3.0, [-1.7628, 1.7628])
+    );
+    // The zero pose: only the elbow's range leaves 0 out.
+    let zero = panda.state_named(&[]).expect("zeros");
+    assert!(zero.iter().all(|&v| v == 0.0), "{zero:?}");
+    let names: Vec<String> = panda
+        .model
+        .outside_limits(&zero)
+        .into_iter()
+        .map(|o| o.joint)
+        .collect();
+    assert_eq!(names, ["panda_joint4"]);
+    // On a limit, or past it by rounding only, is inside.
+    let on = panda
+        .state(&[0.0, 1.7628 + 1e-12, 0.0, -1.0, 0.0, 1.0, 0.0, 0.0])
+        .expect("on");
+    assert!(panda.model.outside_limits(&on).is_empty());
     let e = panda
         .state_named(&[("panda_finger_joint2".into(), 0.01)])
         .expect_err("a mimic joint is not set directly");
     assert!(e.message.contains("not a movable joint"), "{e}");
     assert!(panda.state(&[0.0; 3]).is_err());
-    assert!(panda.state(&[f64::NAN; 8]).is_err());
+    let e = panda.state(&[f64::NAN; 8]).expect_err("not a number");
+    assert_eq!(e.field, "panda_joint1", "{e}");
 }
 
 /// A chain of `n` revolute links in URDF.
@@ -332,4 +355,18 @@ fn the_catalogue_unpacks_the_very_files_shipped() {
         let built_in = kinolab_mechanism::catalogue::mechanism(id).expect("the catalogue reads");
         assert_eq!(built_in, on_disk.model, "{id}");
     }
+}
+
+#[test]
+fn the_hand_is_where_the_most_independent_turns_end() {
+    let hand = |name: &str| {
+        let robot = urdf::read(&robot_file(name)).expect("reads");
+        robot.model.hand().to_owned()
+    };
+    // Not the fingers, which slide (and one of which mimics the other).
+    assert_eq!(hand("panda"), "panda_link7");
+    // Not ee_link or tool0, bolted on beyond the last wrist joint.
+    assert_eq!(hand("ur5"), "wrist_3_link");
+    // A quadruped's first leg, at the knee's link (the foot is bolted on).
+    assert_eq!(hand("solo12"), "FL_LOWER_LEG");
 }

@@ -11,10 +11,10 @@ use kinolab_mechanism::dynamics::statics::Load;
 use serde::Serialize;
 
 use crate::Error;
-use crate::mechanism::Query;
+use crate::mechanism::{Checked, Query};
 
 /// How the joints are set: every one in order, or some by name (the
-/// others at zero, inside their limits).
+/// others at zero).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Joints {
     All(Vec<f64>),
@@ -35,7 +35,7 @@ impl Setup {
             .iter()
             .filter_map(|&v| model.variable_joint(v).map(|j| j.name.clone()))
             .collect();
-        let mut q = model.zero_state();
+        let mut q = model.zeros();
         match joints {
             Joints::All(values) => {
                 expect_len(model, "q", values.len(), vars.len(), &order)?;
@@ -147,7 +147,7 @@ pub enum DynamicsReport {
 }
 
 impl Query for Dynamics {
-    type Report = DynamicsReport;
+    type Report = Checked<DynamicsReport>;
     fn ask(&self, model: &Model) -> Result<Self::Report, Error> {
         let s = Setup::new(model, &self.joints)?;
         let gravity = self.gravity.unwrap_or(kinolab_mechanism::dynamics::EARTH);
@@ -172,12 +172,13 @@ impl Query for Dynamics {
                     .iter()
                     .map(|&r| s.vars.iter().map(|&c| m[(r, c)]).collect())
                     .collect();
-                Ok(DynamicsReport::Inverse {
+                let answer = DynamicsReport::Inverse {
                     order: s.order,
                     tau,
                     gravity: g,
                     mass_matrix,
-                })
+                };
+                Ok(Checked::of(model, &s.q, answer))
             }
             Asked::Forward { tau } => {
                 if !model.has_mass() {
@@ -193,10 +194,11 @@ impl Query for Dynamics {
                 let qdd = model
                     .forward_dynamics_in(&mut work, &s.q, &qd, &tau, gravity)
                     .map_err(core("model"))?;
-                Ok(DynamicsReport::Forward {
+                let answer = DynamicsReport::Forward {
                     qdd: s.pick(qdd),
                     order: s.order,
-                })
+                };
+                Ok(Checked::of(model, &s.q, answer))
             }
         }
     }
@@ -263,7 +265,7 @@ fn frame_named(
 }
 
 impl Query for Statics {
-    type Report = StaticsReport;
+    type Report = Checked<StaticsReport>;
     fn ask(&self, model: &Model) -> Result<Self::Report, Error> {
         let s = Setup::new(model, &self.joints)?;
         let gravity = self.gravity.unwrap_or(kinolab_mechanism::dynamics::EARTH);
@@ -332,6 +334,6 @@ impl Query for Statics {
             report.sag = Some(sag.sag);
             report.frame = Some(name);
         }
-        Ok(report)
+        Ok(Checked::of(model, &s.q, report))
     }
 }

@@ -6,7 +6,8 @@
 
 use kinolab_common::FieldError;
 use kinolab_mechanism::{
-    Goal, Model, Obstacle, Options, Plane, Pose, Target, Vector3, catalogue, file, report, urdf,
+    Goal, Model, Obstacle, Options, OutsideLimit, Plane, Pose, Target, Vector3, catalogue, file,
+    report, urdf,
 };
 use serde::{Deserialize, Serialize};
 
@@ -107,6 +108,27 @@ pub fn answer_on<Q: Query>(model: &Model, query: &Q) -> Result<serde_json::Value
     crate::tidy(&query.ask(model)?)
 }
 
+/// An answer about one state of a model, with the joints whose values lie
+/// outside their limits (`outside_limits`, left out when there are none).
+/// Such a state is computed all the same: kinematics and dynamics are
+/// geometry and physics, not a safety check.
+#[derive(Debug, Clone, Serialize)]
+pub struct Checked<R> {
+    #[serde(flatten)]
+    pub answer: R,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub outside_limits: Vec<OutsideLimit>,
+}
+
+impl<R> Checked<R> {
+    pub fn of(model: &Model, q: &[f64], answer: R) -> Self {
+        Checked {
+            answer,
+            outside_limits: model.outside_limits(q),
+        }
+    }
+}
+
 /// `q` checked against the model's joint count, with followers set from
 /// their leaders and loops closed, as every query sees it.
 fn settled(model: &Model, argument: &str, mut q: Vec<f64>) -> Result<Vec<f64>, Error> {
@@ -195,14 +217,14 @@ pub struct Fk {
 }
 
 impl Query for Fk {
-    type Report = report::ForwardReport;
+    type Report = Checked<report::ForwardReport>;
     fn ask(&self, model: &Model) -> Result<Self::Report, Error> {
         let q = settled(model, "q", self.q.clone())?;
         let (name, f) = frame(model, self.frame.as_deref())?;
         let pose = model
             .pose(&q, &f)
             .map_err(|e| Error::argument("q", e.to_string()))?;
-        Ok(report::forward(&name, &pose))
+        Ok(Checked::of(model, &q, report::forward(&name, &pose)))
     }
 }
 
@@ -213,13 +235,13 @@ pub struct Place {
 }
 
 impl Query for Place {
-    type Report = report::PlacementReport;
+    type Report = Checked<report::PlacementReport>;
     fn ask(&self, model: &Model) -> Result<Self::Report, Error> {
         let q = settled(model, "q", self.q.clone())?;
         let placed = model
             .place(&q)
             .map_err(|e| Error::argument("q", e.to_string()))?;
-        Ok(report::placement(model, &placed))
+        Ok(Checked::of(model, &q, report::placement(model, &placed)))
     }
 }
 
@@ -231,14 +253,14 @@ pub struct Jacobian {
 }
 
 impl Query for Jacobian {
-    type Report = report::JacobianReport;
+    type Report = Checked<report::JacobianReport>;
     fn ask(&self, model: &Model) -> Result<Self::Report, Error> {
         let q = settled(model, "q", self.q.clone())?;
         let (_, f) = frame(model, self.frame.as_deref())?;
         let jac = model
             .jacobian(&q, &f)
             .map_err(|e| Error::argument("q", e.to_string()))?;
-        Ok(report::jacobian(&jac))
+        Ok(Checked::of(model, &q, report::jacobian(&jac)))
     }
 }
 

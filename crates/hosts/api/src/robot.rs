@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use kinolab_mechanism::{file::matrix_of, report, urdf::Robot};
 use serde::Serialize;
 
-use crate::mechanism::{Ik, Query, robot};
+use crate::mechanism::{Checked, Ik, Query, robot};
 use crate::{Error, Files, Operation, Source};
 
 /// How a robot's joints are set.
@@ -15,7 +15,7 @@ use crate::{Error, Files, Operation, Source};
 pub enum Setting {
     /// Every movable joint, in file order.
     All(Vec<f64>),
-    /// Some joints by name; the others at zero (inside their limits).
+    /// Some joints by name; the others at zero.
     Named(Vec<(String, f64)>),
 }
 
@@ -62,7 +62,7 @@ pub enum RobotFkReport {
 }
 
 impl Operation for RobotFk {
-    type Report = RobotFkReport;
+    type Report = Checked<RobotFkReport>;
     fn report(&self, _: &mut dyn Files) -> Result<Self::Report, Error> {
         let robot = robot(&self.robot)?;
         let q = self.joints.state(&robot)?;
@@ -77,14 +77,18 @@ impl Operation for RobotFk {
                 .zip(&placed.bodies)
                 .map(|(b, pose)| (b.name.clone(), matrix_of(pose)))
                 .collect();
-            return Ok(RobotFkReport::All { frames });
+            return Ok(Checked::of(model, &q, RobotFkReport::All { frames }));
         }
         let name = self.frame.as_deref().unwrap_or(robot.tip());
         let f = model
             .frame(name)
             .map_err(|e| Error::argument("frame", e.message))?;
         let pose = placed.bodies[f.body] * f.offset;
-        Ok(RobotFkReport::One(report::forward(name, &pose)))
+        Ok(Checked::of(
+            model,
+            &q,
+            RobotFkReport::One(report::forward(name, &pose)),
+        ))
     }
 }
 

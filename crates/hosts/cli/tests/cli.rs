@@ -1040,10 +1040,19 @@ fn fk_reads_a_urdf_file_by_joint_order_or_name() {
     let all = json(&["fk", &panda, "--q", q, "--all-frames"]);
     assert_eq!(all["frames"]["panda_link1"], link1["matrix"]);
     assert_eq!(all["frames"][&tip], by_order["matrix"]);
-    fails_with(
-        &["fk", &panda, "--q", "0,3,0,0,0,0,0,0"],
-        "panda.urdf: --q: panda_joint2: 3 is outside the joint's limits",
-    );
+    assert!(by_order.get("outside_limits").is_none(), "{by_order}");
+    // FK is geometry: a pose past a limit is computed, and the limit named.
+    let past = json(&["fk", &panda, "--q", "0,3,0,-1.2,0,1.4,0,0"]);
+    assert!(past["matrix"][0][3].is_f64(), "{past}");
+    let outside = past["outside_limits"].as_array().expect("outside_limits");
+    assert_eq!(outside.len(), 1, "{past}");
+    assert_eq!(outside[0]["joint"], "panda_joint2");
+    assert_eq!(outside[0]["value"], 3.0);
+    assert_eq!(outside[0]["limits"][1], 1.7628);
+    // The zero pose, where the elbow's range [-3.0718, -0.0698] leaves out 0.
+    let zero = json(&["fk", &panda, "--set", "panda_joint1=0"]);
+    assert_eq!(zero["outside_limits"][0]["joint"], "panda_joint4", "{zero}");
+    assert_eq!(zero["outside_limits"][0]["value"], 0.0);
     fails_with(
         &["fk", &panda, "--set", "elbow=1"],
         "panda.urdf: --set: `elbow` is not a movable joint",

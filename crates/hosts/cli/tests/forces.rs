@@ -104,6 +104,22 @@ fn real_robots_through_the_command_line_match_pinocchio() {
             assert_eq!(forward.as_object().unwrap().len(), 2, "{{ order, qdd }}");
         }
     }
+    // The Panda's zero pose is outside the elbow's range: computed, and named.
+    let panda = "crates/body/mechanism/robots/panda.urdf";
+    let (code, zero, err) = kinolab(&[
+        "dynamics",
+        panda,
+        "--set",
+        "panda_joint1=0",
+        "--qdd",
+        "0,0,0,0,0,0,0,0",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(zero["outside_limits"][0]["joint"], "panda_joint4", "{zero}");
+    assert_eq!(
+        zero["tau"], zero["gravity"],
+        "at rest the torques are gravity's"
+    );
 }
 
 #[test]

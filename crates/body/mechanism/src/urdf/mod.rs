@@ -83,8 +83,8 @@ impl Robot {
     }
 
     /// The model's state for driven joint values in file order: followers
-    /// set from their leaders. Each value must be finite and inside its
-    /// joint's limits.
+    /// set from their leaders. Each value must be finite; it may lie
+    /// outside its joint's limits (FK is geometry).
     pub fn state(&self, q: &[f64]) -> Result<Vec<f64>, FieldError> {
         if q.len() != self.driven.len() {
             let names: Vec<&str> = self.driven().collect();
@@ -99,7 +99,7 @@ impl Robot {
                 ),
             ));
         }
-        let mut state = self.model.zero_state();
+        let mut state = self.model.zeros();
         for (&v, &value) in self.driven.iter().zip(q) {
             state[v] = self.checked(v, value)?;
         }
@@ -138,9 +138,9 @@ impl Robot {
     }
 
     /// The model's state with the named driven joints set and the others at
-    /// zero (inside their limits).
+    /// zero (even where zero is outside a joint's limits).
     pub fn state_named(&self, set: &[(String, f64)]) -> Result<Vec<f64>, FieldError> {
-        let mut state = self.model.zero_state();
+        let mut state = self.model.zeros();
         for (name, value) in set {
             let v = self
                 .model
@@ -163,25 +163,13 @@ impl Robot {
         Ok(state)
     }
 
-    /// `value` for variable `v`, if finite and inside the joint's limits.
+    /// `value` for variable `v`, if finite. Limits do not refuse it: the
+    /// answers list the joints outside theirs ([`Model::outside_limits`]).
     fn checked(&self, v: usize, value: f64) -> Result<f64, FieldError> {
         let Some(joint) = self.model.variable_joint(v) else {
             return Err(FieldError::new("q", "no such joint"));
         };
-        let field = || joint.name.clone();
-        crate::error::finite_at(value, field)?;
-        if let Some([lo, hi]) = joint.limits
-            && !(lo - LIMIT_SLACK..=hi + LIMIT_SLACK).contains(&value)
-        {
-            return Err(FieldError::new(
-                field(),
-                format!("{value} is outside the joint's limits [{lo}, {hi}]"),
-            ));
-        }
+        crate::error::finite_at(value, || joint.name.clone())?;
         Ok(value)
     }
 }
-
-/// How far past a limit a value may be and still count as on it (a limit
-/// printed with fewer digits than the value).
-const LIMIT_SLACK: f64 = 1e-9;

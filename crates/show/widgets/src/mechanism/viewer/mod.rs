@@ -59,9 +59,12 @@ enum TaskKind {
 }
 
 /// The frame a learner moves, by model: the first one the model has, else
-/// the end of its longest chain.
-const END_FRAMES: [&str; 5] = [
+/// its hand ([`Model::hand`]). `tool0` and `flange` are the tool frames
+/// that ROS-Industrial's arms name.
+const END_FRAMES: [&str; 7] = [
     "tool",
+    "tool0",
+    "flange",
     "arm/gripper",
     "left-front/foot",
     "coupler-point",
@@ -217,7 +220,7 @@ impl Viewer {
         let end = END_FRAMES
             .iter()
             .copied()
-            .chain([model.tip()])
+            .chain([model.hand()])
             .find_map(|n| model.frame(n).ok().map(|f| (n.to_string(), f)));
         let (centre, extent) = bounds::bounds(&model, &q, false);
         Self {

@@ -82,11 +82,8 @@ fn a_dropped_urdf_opens_with_the_files_joint_names_and_limits() {
     let viewer = &h.state().0;
     assert_eq!(viewer.model.name(), "ur5");
     assert_eq!(viewer.driven.len(), 6);
-    // The drag target is the end of the longest chain.
-    assert_eq!(
-        viewer.end.as_ref().map(|(n, _)| n.as_str()),
-        Some("ee_link")
-    );
+    // The drag target is the tool frame the file names.
+    assert_eq!(viewer.end.as_ref().map(|(n, _)| n.as_str()), Some("tool0"));
     h.get_by_role_and_label(Role::Slider, "shoulder_pan_joint");
     h.get_by_role_and_label(Role::Slider, "wrist_3_joint");
     let [lo, hi] = slider_limits(&h, "shoulder_pan_joint");

@@ -204,7 +204,7 @@ impl Viewer {
                 } else {
                     "°"
                 };
-                let shown = |x: f64| fixed(to_shown(&self.model, v, x), 0);
+                let shown = |x: f64| truthful(to_shown(&self.model, v, x));
                 let home = if lo > 0.0 { lo } else { hi };
                 Some(format!(
                     "{} starts at {}{unit}: its range, {}{unit} to {}{unit}, does not include 0.",
@@ -514,5 +514,26 @@ impl Viewer {
             self.q = q;
             self.target = None;
         }
+    }
+}
+
+/// `x` with as few decimals as keep it true: a limit of 0.0087 rad is
+/// "0.5°", never "0°", so that "its range does not include 0" reads right.
+fn truthful(x: f64) -> String {
+    let nonzero = |text: &String| text.chars().any(|c| c.is_ascii_digit() && c != '0');
+    (0..=4)
+        .map(|decimals| fixed(x, decimals))
+        .find(|text| x == 0.0 || nonzero(text))
+        .unwrap_or_else(|| fixed(x, 4))
+}
+
+#[cfg(test)]
+mod truthful_tests {
+    #[test]
+    fn a_small_limit_is_never_printed_as_zero() {
+        assert_eq!(super::truthful(0.4986), "0.5");
+        assert_eq!(super::truthful(164.0), "164");
+        assert_eq!(super::truthful(-0.04), "-0.04");
+        assert_eq!(super::truthful(0.0), "0");
     }
 }
