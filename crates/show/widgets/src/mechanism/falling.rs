@@ -90,8 +90,39 @@ struct LetItFall {
     player: Option<Player<Fall>>,
     /// The settings the player and the drifts were made for.
     made_for: Option<Settings>,
-    /// Energy strayed in a whole undamped run at the step, and at half it.
-    drifts: Option<(f64, f64)>,
+    /// How far the energy strays in a whole undamped run at the step and
+    /// at half it, measured a few hundred steps a frame.
+    drifts: Option<Drifts>,
+}
+
+/// Steps of the drift runs taken in one frame: the first frame, and a
+/// slider dragged, stay quick; the answer comes a few frames later.
+const DRIFT_STEPS_PER_FRAME: usize = 400;
+
+/// Two undamped runs from the same start, at a step and at half it, each
+/// with the worst energy drift seen so far.
+struct Drifts {
+    runs: Vec<(Falling, f64, bool)>,
+}
+
+impl Drifts {
+    /// Step the runs on by at most `budget` steps in all; the two worst
+    /// drifts once both runs have ended.
+    fn advance(&mut self, model: &Model, mut budget: usize) -> Option<(f64, f64)> {
+        for (run, worst, ended) in &mut self.runs {
+            while !*ended && budget > 0 {
+                budget -= 1;
+                match run.step(model) {
+                    Ok(true) => *worst = worst.max(run.drift()),
+                    _ => *ended = true,
+                }
+            }
+        }
+        match self.runs.as_slice() {
+            [(_, at, true), (_, half, true)] => Some((*at, *half)),
+            _ => None,
+        }
+    }
 }
 
 pub fn create(p: &Params) -> Result<Box<dyn LabWidget>, String> {
@@ -168,15 +199,14 @@ impl LetItFall {
                 })
             });
         // How far a whole undamped run strays, at this step and half it.
-        let strays = |dt: f64| -> Option<f64> {
-            let mut f = self.model.release(&q, &qd, self.release(dt, 0.0)).ok()?;
-            let mut worst: f64 = 0.0;
-            while f.step(&self.model).ok()? {
-                worst = worst.max(f.drift());
-            }
-            Some(worst)
-        };
-        self.drifts = strays(dt).zip(strays(dt / 2.0));
+        let runs: Option<Vec<_>> = [dt, dt / 2.0]
+            .into_iter()
+            .map(|dt| {
+                let run = self.model.release(&q, &qd, self.release(dt, 0.0)).ok()?;
+                Some((run, 0.0, false))
+            })
+            .collect();
+        self.drifts = runs.map(|runs| Drifts { runs });
     }
 
     fn controls(&mut self, ui: &mut egui::Ui) {
@@ -258,8 +288,12 @@ impl LetItFall {
     fn readout(&self, player: &Player<Fall>) -> String {
         let start = player.peek().falling.start_energy;
         let now = player.ticks_shown().last().map_or(start, |k| k.energy);
-        let drift = match self.drifts {
-            Some((at, half)) => format!(
+        let measured = self.drifts.as_ref().map(|d| match d.runs.as_slice() {
+            [(_, at, true), (_, half, true)] => Some((*at, *half)),
+            _ => None,
+        });
+        let drift = match measured {
+            Some(Some((at, half))) => format!(
                 " Undamped, over {} s the energy strays {} % with a {} ms step and {} % with {} ms.",
                 fixed(DURATION, 0),
                 fixed(at * 100.0, 4),
@@ -267,6 +301,7 @@ impl LetItFall {
                 fixed(half * 100.0, 4),
                 fixed(self.settings.step / 2.0, 1)
             ),
+            Some(None) => " Measuring how far the energy strays at two steps…".to_owned(),
             None => String::new(),
         };
         format!(
@@ -291,6 +326,11 @@ impl LabWidget for LetItFall {
             return;
         };
         player.run(ui, MOST_PER_FRAME);
+        if let Some(drifts) = &mut self.drifts
+            && drifts.advance(&self.model, DRIFT_STEPS_PER_FRAME).is_none()
+        {
+            ui.ctx().request_repaint();
+        }
         player.controls(ui);
         let q = player.peek().falling.now.q.clone();
         let shown = player.ticks_shown().last().map_or(q, |k| k.q.clone());
@@ -347,7 +387,10 @@ mod tests {
         })
         .unwrap();
         w.refresh();
-        let (at, half) = w.drifts.unwrap();
+        let drifts = w.drifts.as_mut().unwrap();
+        // A 10 ms step: 1 000 and 2 000 steps, a few frames' budget.
+        assert!(drifts.advance(&w.model, DRIFT_STEPS_PER_FRAME).is_none());
+        let (at, half) = drifts.advance(&w.model, 3000).unwrap();
         assert!(half < at / 4.0, "{half} vs {at}");
         w.seek(5.0);
         let p = w.player.as_ref().unwrap();
