@@ -25,15 +25,10 @@ const SLACK: f64 = 1e-9;
 impl Inertial {
     /// Mass properties from the six entries of the tensor (`ixx ixy ixz
     /// iyy iyz izz`), checked: `body` names the body in the message.
-    pub fn new(
-        body: &str,
-        mass: f64,
-        com: [f64; 3],
-        [ixx, ixy, ixz, iyy, iyz, izz]: [f64; 6],
-    ) -> Result<Self, FieldError> {
-        let at = |what: &str| format!("{body}: {what}");
-        let read = Self::as_written(body, mass, com, [ixx, ixy, ixz, iyy, iyz, izz])?;
-        check_tensor(&read.inertia).map_err(|why| FieldError::new(at("inertia"), why))?;
+    pub fn new(body: &str, mass: f64, com: [f64; 3], tensor: [f64; 6]) -> Result<Self, FieldError> {
+        let read = Self::as_written(body, mass, com, tensor)?;
+        check_tensor(&read.inertia)
+            .map_err(|why| FieldError::new(format!("{body}: inertia"), why))?;
         Ok(read)
     }
 

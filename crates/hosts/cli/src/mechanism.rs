@@ -236,42 +236,13 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             )
         }
         Command::Place { model, q } => on(&model, mechanism::Place { q: q.values()? }),
-        Command::Dynamics { at, qd, qdd, tau } => {
-            let asked = match (qdd, tau) {
-                (Some(qdd), _) => forces::Asked::Inverse {
-                    qdd: numbers("qdd", &qdd)?,
-                },
-                (None, Some(tau)) => forces::Asked::Forward {
-                    tau: numbers("tau", &tau)?,
-                },
-                (None, None) => return Err(Failure("give --qdd or --tau".into())),
-            };
-            let query = forces::Dynamics {
-                joints: at.joints()?,
-                qd: qd.map(|qd| numbers("qd", &qd)).transpose()?,
-                asked,
-                gravity: at.gravity()?,
-            };
-            on(&at.model, query).map_err(|e| naming_the_file(e, &at.model))
-        }
+        Command::Dynamics { at, qd, qdd, tau } => dynamics(&at, qd, qdd, tau),
         Command::Statics {
             at,
             load,
             stiffness,
             frame,
-        } => {
-            let query = forces::Statics {
-                joints: at.joints()?,
-                loads: load
-                    .iter()
-                    .map(|l| load_spec(l))
-                    .collect::<Result<_, _>>()?,
-                stiffness: stiffness.as_deref().map(stiffness_spec).transpose()?,
-                frame,
-                gravity: at.gravity()?,
-            };
-            on(&at.model, query).map_err(|e| naming_the_file(e, &at.model))
-        }
+        } => statics(&at, &load, stiffness.as_deref(), frame),
         Command::Jacobian { model, q, frame } => on(
             &model,
             mechanism::Jacobian {
@@ -328,6 +299,51 @@ pub(crate) fn run(command: Command) -> Result<Value, Failure> {
             on(&model, ik)
         }
     }
+}
+
+/// `kinolab dynamics`: inverse with `--qdd`, forward with `--tau`.
+fn dynamics(
+    at: &Posed,
+    qd: Option<String>,
+    qdd: Option<String>,
+    tau: Option<String>,
+) -> Result<Value, Failure> {
+    let asked = match (qdd, tau) {
+        (Some(qdd), _) => forces::Asked::Inverse {
+            qdd: numbers("qdd", &qdd)?,
+        },
+        (None, Some(tau)) => forces::Asked::Forward {
+            tau: numbers("tau", &tau)?,
+        },
+        (None, None) => return Err(Failure("give --qdd or --tau".into())),
+    };
+    let query = forces::Dynamics {
+        joints: at.joints()?,
+        qd: qd.map(|qd| numbers("qd", &qd)).transpose()?,
+        asked,
+        gravity: at.gravity()?,
+    };
+    on(&at.model, query).map_err(|e| naming_the_file(e, &at.model))
+}
+
+/// `kinolab statics`: the holding torques, loads and springs.
+fn statics(
+    at: &Posed,
+    load: &[String],
+    stiffness: Option<&str>,
+    frame: Option<String>,
+) -> Result<Value, Failure> {
+    let query = forces::Statics {
+        joints: at.joints()?,
+        loads: load
+            .iter()
+            .map(|l| load_spec(l))
+            .collect::<Result<_, _>>()?,
+        stiffness: stiffness.map(stiffness_spec).transpose()?,
+        frame,
+        gravity: at.gravity()?,
+    };
+    on(&at.model, query).map_err(|e| naming_the_file(e, &at.model))
 }
 
 /// `kinolab export-urdf MODEL`: the URDF text on stdout, each thing URDF
